@@ -1,0 +1,34 @@
+// Copyright (c) 2026 The Intrinsic_reflectional_symmetry_3 project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Author(s)     : The Intrinsic_reflectional_symmetry_3 developers
+//
+// X-macro list of the package's named parameters. No include guard on purpose:
+// parameters.h expands it several times.
+//
+// CGAL_IRS_add_named_parameter(tag type, tag value, setter name): names the
+// package owns (they are not in CGAL 5.5's list).
+// CGAL_IRS_import_named_parameter(tag type, setter name): CGAL's own names that
+// the package reads, re-exposed so that own setters can follow them in a chain.
+
+// preparation
+CGAL_IRS_add_named_parameter(target_number_of_vertices_t, target_number_of_vertices, target_number_of_vertices)
+CGAL_IRS_add_named_parameter(isotropic_remeshing_t, isotropic_remeshing, isotropic_remeshing)
+// sampling and geodesics
+CGAL_IRS_add_named_parameter(number_of_samples_t, number_of_samples, number_of_samples)
+CGAL_IRS_add_named_parameter(number_of_threads_t, number_of_threads, number_of_threads)
+// signatures and the similarity filter
+CGAL_IRS_add_named_parameter(number_of_signature_rings_t, number_of_signature_rings, number_of_signature_rings)
+CGAL_IRS_add_named_parameter(signature_radius_t, signature_radius, signature_radius)
+CGAL_IRS_add_named_parameter(sdf_cone_angle_t, sdf_cone_angle, sdf_cone_angle)
+CGAL_IRS_add_named_parameter(sdf_number_of_rays_t, sdf_number_of_rays, sdf_number_of_rays)
+CGAL_IRS_add_named_parameter(similarity_threshold_t, similarity_threshold, similarity_threshold)
+// voting filters (paper section 3.3)
+CGAL_IRS_add_named_parameter(distance_threshold_t, distance_threshold, distance_threshold)
+CGAL_IRS_add_named_parameter(axial_threshold_t, axial_threshold, axial_threshold)
+
+CGAL_IRS_import_named_parameter(vertex_point_t, vertex_point_map)
+CGAL_IRS_import_named_parameter(geom_traits_t, geom_traits)
+CGAL_IRS_import_named_parameter(vertex_index_t, vertex_index_map)
+CGAL_IRS_import_named_parameter(face_index_t, face_index_map)
+CGAL_IRS_import_named_parameter(random_seed_t, random_seed)
+CGAL_IRS_import_named_parameter(number_of_iterations_t, number_of_iterations)

@@ -1,0 +1,182 @@
+// Copyright (c) 2026 The Intrinsic_reflectional_symmetry_3 project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Output helpers of the irsym tool: a tiny JSON writer, stage timing with peak
+// memory, coloured PLY files and headless f3d pictures.
+
+#ifndef IRSYM_OUTPUT_H
+#define IRSYM_OUTPUT_H
+
+#include <CGAL/IO/Color.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace irsym {
+
+// Boost 1.74 has no Boost.JSON and property_tree writes every number as a
+// string, so the report is written by this small emitter.
+class Json
+{
+public:
+  static Json object() { Json j; j.text_ = "{"; j.close_ = "}"; return j; }
+  static Json array() { Json j; j.text_ = "["; j.close_ = "]"; return j; }
+
+  Json& add(const std::string& key, const Json& value) { return raw(key, value.str()); }
+  Json& add(const std::string& key, const std::string& value) { return raw(key, quote(value)); }
+  Json& add(const std::string& key, const char* value) { return raw(key, quote(value)); }
+  Json& add(const std::string& key, bool value) { return raw(key, value ? "true" : "false"); }
+  template <typename T,
+            typename = std::enable_if_t<std::is_arithmetic<T>::value && !std::is_same<T, bool>::value>>
+  Json& add(const std::string& key, T value) { return raw(key, number(double(value))); }
+  Json& push(const Json& value) { return raw("", value.str()); }
+  template <typename T, typename = std::enable_if_t<std::is_arithmetic<T>::value>>
+  Json& push(T value) { return raw("", number(double(value))); }
+
+  std::string str() const { return text_ + close_; }
+
+private:
+  Json& raw(const std::string& key, const std::string& value)
+  {
+    if(!first_) text_ += ",";
+    first_ = false;
+    text_ += "\n  ";
+    if(!key.empty()) text_ += quote(key) + ": ";
+    text_ += value;
+    return *this;
+  }
+  static std::string number(double v)
+  {
+    if(!std::isfinite(v)) return "null";
+    std::ostringstream s;
+    s << std::setprecision(10) << v;
+    return s.str();
+  }
+  static std::string quote(const std::string& s)
+  {
+    std::string q = "\"";
+    for(char c : s) {
+      if(c == '"' || c == '\\') { q += '\\'; q += c; }
+      else if(c == '\n') q += "\\n";
+      else if(static_cast<unsigned char>(c) < 0x20) q += ' ';
+      else q += c;
+    }
+    return q + "\"";
+  }
+  std::string text_, close_;
+  bool first_ = true;
+};
+
+/// peak resident memory of the process so far, in MiB
+inline double peak_memory_mib()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0; // Linux reports KiB
+}
+
+/// wall time and peak memory of each stage, in the order they ran
+class Stage_log
+{
+public:
+  void start(const std::string& name)
+  {
+    name_ = name;
+    timer_.reset();
+    timer_.start();
+    std::fprintf(stderr, "[irsym] %s ...\n", name.c_str());
+  }
+  void stop()
+  {
+    timer_.stop();
+    stages_.push_back({name_, timer_.time(), peak_memory_mib()});
+    std::fprintf(stderr, "[irsym] %s: %.3f s, peak %.0f MiB\n", name_.c_str(), timer_.time(),
+                 stages_.back().peak_mib);
+  }
+  Json to_json() const
+  {
+    Json a = Json::array();
+    for(const Stage& s : stages_)
+      a.push(Json::object().add("stage", s.name).add("seconds", s.seconds).add("peak_memory_mib", s.peak_mib));
+    return a;
+  }
+  double total_seconds() const
+  {
+    double t = 0;
+    for(const Stage& s : stages_) t += s.seconds;
+    return t;
+  }
+
+private:
+  struct Stage { std::string name; double seconds; double peak_mib; };
+  std::vector<Stage> stages_;
+  std::string name_;
+  CGAL::Real_timer timer_;
+};
+
+/// a perceptually ordered blue-to-yellow map (viridis, 5 control points)
+inline CGAL::IO::Color colour_map(double t)
+{
+  static const double c[5][3] = {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
+  if(!std::isfinite(t)) return CGAL::IO::Color(128, 128, 128);
+  t = std::clamp(t, 0.0, 1.0) * 4.0;
+  const int i = std::min(int(t), 3);
+  const double f = t - i;
+  auto mix = [&](int k) { return static_cast<unsigned char>(std::lround(c[i][k] * (1 - f) + c[i + 1][k] * f)); };
+  return CGAL::IO::Color(mix(0), mix(1), mix(2));
+}
+
+/// Writes `mesh` to `path` as PLY with a per-vertex scalar (named `name`) and
+/// the matching colour; values are normalised by their own min/max.
+template <typename Point>
+bool write_scalar_ply(const CGAL::Surface_mesh<Point>& input, const std::vector<double>& values,
+                      const std::string& name, const std::string& path)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  Mesh mesh = input;
+  auto scalar = mesh.template add_property_map<typename Mesh::Vertex_index, float>("v:" + name, 0.f).first;
+  auto colour = mesh.template add_property_map<typename Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for(double v : values)
+    if(std::isfinite(v)) { lo = std::min(lo, v); hi = std::max(hi, v); }
+  const double range = hi > lo ? hi - lo : 1.0;
+  for(auto v : mesh.vertices()) {
+    const double x = values[v.idx()];
+    scalar[v] = float(x);
+    colour[v] = colour_map((x - lo) / range);
+  }
+  std::ofstream out(path, std::ios::binary);
+  return out && CGAL::IO::write_PLY(out, mesh);
+}
+
+inline bool command_exists(const std::string& name)
+{
+  return std::system(("command -v " + name + " > /dev/null 2>&1").c_str()) == 0;
+}
+
+/// Renders a coloured PLY to PNG with f3d under xvfb-run; false if unavailable.
+inline bool render_png(const std::string& ply, const std::string& png)
+{
+  if(!command_exists("f3d") || !command_exists("xvfb-run")) return false;
+  const std::string cmd = "xvfb-run -a -s '-screen 0 1280x1024x24' f3d --quiet --no-background=0 "
+                          "--scalars=RGB --comp=-2 --resolution=1200,900 --up=+Z "
+                          "--output='" + png + "' '" + ply + "' > /dev/null 2>&1";
+  return std::system(cmd.c_str()) == 0;
+}
+
+} // namespace irsym
+
+#endif // IRSYM_OUTPUT_H

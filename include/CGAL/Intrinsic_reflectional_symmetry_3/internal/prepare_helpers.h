@@ -1,0 +1,57 @@
+// Copyright (c) 2026 The Intrinsic_reflectional_symmetry_3 project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Author(s)     : The Intrinsic_reflectional_symmetry_3 developers
+
+#ifndef CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_INTERNAL_PREPARE_HELPERS_H
+#define CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_INTERNAL_PREPARE_HELPERS_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Intrinsic_reflectional_symmetry_3/errors.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cstddef>
+#include <sstream>
+#include <string>
+
+namespace CGAL {
+namespace Intrinsic_reflectional_symmetry_3 {
+namespace internal {
+
+// Stops edge collapse on a Surface_mesh at a vertex count: CGAL 5.5's count
+// predicates count edges or faces, whose relation to vertices depends on boundaries.
+class Prepare_vertex_count_stop_predicate
+{
+public:
+  explicit Prepare_vertex_count_stop_predicate(std::size_t number_of_vertices)
+    : number_of_vertices_(number_of_vertices) {}
+
+  template <typename FT, typename Profile>
+  bool operator()(const FT& /*current_cost*/, const Profile& profile,
+                  std::size_t /*initial_edge_count*/, std::size_t /*current_edge_count*/) const
+  {
+    // number_of_vertices(), not num_vertices(): the latter counts removed vertices
+    return std::size_t(profile.surface_mesh().number_of_vertices()) <= number_of_vertices_;
+  }
+
+private:
+  std::size_t number_of_vertices_;
+};
+
+inline void prepare_check_size(std::size_t given, std::size_t needed, const char* what)
+{
+  if(given < needed) {
+    std::ostringstream os;
+    os << given << " " << what << " given, " << needed << " needed";
+    throw Input_error(Input_problem::invalid_parameter, os.str());
+  }
+}
+
+} // namespace internal
+} // namespace Intrinsic_reflectional_symmetry_3
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_INTERNAL_PREPARE_HELPERS_H

@@ -104,4 +104,9 @@ compute_geodesic_distance_matrix(const GeodesicOracle& oracle, const std::vector
 
 #include <CGAL/enable_warnings.h>
 
+// the three models of GeodesicDistanceOracle
+#include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/Exact_geodesic_oracle.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
+
 #endif // CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_GEODESIC_DISTANCES_H

@@ -10,7 +10,7 @@
 #include <CGAL/IO/Color.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Surface_mesh/IO/PLY.h>
+#include <CGAL/boost/graph/iterator.h>
 
 #include <sys/resource.h>
 
@@ -35,18 +35,29 @@ public:
   static Json object() { Json j; j.text_ = "{"; j.close_ = "}"; return j; }
   static Json array() { Json j; j.text_ = "["; j.close_ = "]"; return j; }
 
-  Json& add(const std::string& key, const Json& value) { return raw(key, value.str()); }
+  Json& add(const std::string& key, const Json& value) { return raw(key, value.nested()); }
   Json& add(const std::string& key, const std::string& value) { return raw(key, quote(value)); }
   Json& add(const std::string& key, const char* value) { return raw(key, quote(value)); }
   Json& add(const std::string& key, bool value) { return raw(key, value ? "true" : "false"); }
   template <typename T,
             typename = std::enable_if_t<std::is_arithmetic<T>::value && !std::is_same<T, bool>::value>>
   Json& add(const std::string& key, T value) { return raw(key, number(double(value))); }
-  Json& push(const Json& value) { return raw("", value.str()); }
+  Json& push(const Json& value) { return raw("", value.nested()); }
   template <typename T, typename = std::enable_if_t<std::is_arithmetic<T>::value>>
   Json& push(T value) { return raw("", number(double(value))); }
 
-  std::string str() const { return text_ + close_; }
+  std::string str() const { return text_ + (first_ ? "" : "\n") + close_; }
+
+private:
+  // the text of a value nested one level deeper: every line indented once more
+  std::string nested() const
+  {
+    std::string t;
+    for(char c : str()) { t += c; if(c == '\n') t += "  "; }
+    return t;
+  }
+
+public:
 
 private:
   Json& raw(const std::string& key, const std::string& value)
@@ -139,27 +150,41 @@ inline CGAL::IO::Color colour_map(double t)
   return CGAL::IO::Color(mix(0), mix(1), mix(2));
 }
 
-/// Writes `mesh` to `path` as PLY with a per-vertex scalar (named `name`) and
-/// the matching colour; values are normalised by their own min/max.
+/// Writes `mesh` to `path` as binary PLY with a per-vertex scalar (named
+/// `name`) and the matching colour; values are normalised by their own
+/// min/max. Written here rather than with CGAL::IO::write_PLY, which always adds
+/// an alpha channel that f3d then renders as translucency.
 template <typename Point>
-bool write_scalar_ply(const CGAL::Surface_mesh<Point>& input, const std::vector<double>& values,
+bool write_scalar_ply(const CGAL::Surface_mesh<Point>& mesh, const std::vector<double>& values,
                       const std::string& name, const std::string& path)
 {
-  typedef CGAL::Surface_mesh<Point> Mesh;
-  Mesh mesh = input;
-  auto scalar = mesh.template add_property_map<typename Mesh::Vertex_index, float>("v:" + name, 0.f).first;
-  auto colour = mesh.template add_property_map<typename Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for(double v : values)
     if(std::isfinite(v)) { lo = std::min(lo, v); hi = std::max(hi, v); }
   const double range = hi > lo ? hi - lo : 1.0;
-  for(auto v : mesh.vertices()) {
-    const double x = values[v.idx()];
-    scalar[v] = float(x);
-    colour[v] = colour_map((x - lo) / range);
-  }
+
   std::ofstream out(path, std::ios::binary);
-  return out && CGAL::IO::write_PLY(out, mesh);
+  out << "ply\nformat binary_little_endian 1.0\ncomment irsym\n"
+      << "element vertex " << mesh.number_of_vertices() << "\n"
+      << "property float x\nproperty float y\nproperty float z\n"
+      << "property float " << name << "\n"
+      << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+      << "element face " << mesh.number_of_faces() << "\n"
+      << "property list uchar int vertex_indices\nend_header\n";
+  auto put = [&out](auto x) { out.write(reinterpret_cast<const char*>(&x), sizeof(x)); };
+  for(auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    put(float(CGAL::to_double(p.x()))); put(float(CGAL::to_double(p.y()))); put(float(CGAL::to_double(p.z())));
+    const double x = values.at(v.idx());
+    put(float(x));
+    const CGAL::IO::Color c = colour_map((x - lo) / range);
+    put(c.red()); put(c.green()); put(c.blue());
+  }
+  for(auto f : mesh.faces()) {
+    put(static_cast<unsigned char>(mesh.degree(f)));
+    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) put(static_cast<int>(v.idx()));
+  }
+  return bool(out);
 }
 
 inline bool command_exists(const std::string& name)

@@ -1,0 +1,284 @@
+// Copyright (c) 2026 The Intrinsic_reflectional_symmetry_3 project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// irsym: partial intrinsic reflectional symmetry of a closed triangle mesh,
+// from the command line. Runs the package's pipeline stage by stage and writes
+// every output in terms of the INPUT mesh's vertices and faces.
+
+#include <CGAL/Intrinsic_reflectional_symmetry_3/check_input.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/prepare_mesh.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#endif
+
+#include "irsym_output.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace IRS = CGAL::Intrinsic_reflectional_symmetry_3;
+namespace fs = std::filesystem;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+
+namespace {
+
+const char* usage_text =
+R"(irsym - partial intrinsic reflectional symmetry of a closed triangle mesh
+
+usage: irsym MESH --out DIR [options]
+       irsym --shape NAME --out DIR [options]
+
+  MESH                 input mesh (OFF, OBJ, PLY or STL); it is never modified
+  --shape NAME         use a generated shape instead of a file: sphere, ellipsoid,
+                       capsule, torus, snowman, two_snowmen, bent_capsule
+  --out DIR            output directory (created if missing)
+  --samples N          number of samples (default: min(3000, number of vertices))
+  --seed S             random seed (default: 0); same seed, same result
+  --geodesics G        geodesic oracle: heat (default), exact or dijkstra
+  --threads T          worker threads (default: all cores); results do not depend on it
+  --target-vertices N  first remesh or decimate to about N vertices (default: keep the mesh)
+  --remesh             reach --target-vertices by isotropic remeshing (default: decimation
+                       when reducing, remeshing when refining)
+  --help               this text
+
+outputs in DIR:
+  report.json          input statistics, parameters, time and peak memory per stage
+  samples.txt          the samples, as input vertex ids (one per line)
+  sdf.ply              input mesh coloured by the shape diameter function (SDF)
+  geodesics.ply        input mesh coloured by the geodesic distance from the first sample
+  *.png                pictures of the PLY files, where f3d and xvfb-run are installed
+
+exit status: 0 success, 1 usage error, 2 bad input (the message names the problem)
+)";
+
+struct Options
+{
+  std::string mesh_path, shape, out_dir, geodesics = "heat";
+  std::optional<long long> samples;
+  unsigned seed = 0;
+  int threads = 0;
+  long long target_vertices = 0;
+  bool remesh = false;
+};
+
+struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
+
+long long parse_integer(const std::string& option, const std::string& text, long long lo)
+{
+  std::size_t used = 0;
+  long long v = 0;
+  try { v = std::stoll(text, &used); } catch(...) { used = 0; }
+  if(used != text.size() || text.empty())
+    throw Usage_error(option + " expects an integer, got '" + text + "'");
+  if(v < lo)
+    throw Usage_error(option + " must be at least " + std::to_string(lo) + ", got " + text);
+  return v;
+}
+
+Options parse_options(int argc, char** argv)
+{
+  Options o;
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc) throw Usage_error(a + " expects a value");
+      return argv[++i];
+    };
+    if(a == "--help" || a == "-h") { std::cout << usage_text; std::exit(0); }
+    else if(a == "--out") o.out_dir = value();
+    else if(a == "--shape") o.shape = value();
+    else if(a == "--samples") o.samples = parse_integer(a, value(), 1);
+    else if(a == "--seed") o.seed = unsigned(parse_integer(a, value(), 0));
+    else if(a == "--threads") o.threads = int(parse_integer(a, value(), 1));
+    else if(a == "--target-vertices") o.target_vertices = parse_integer(a, value(), 4);
+    else if(a == "--remesh") o.remesh = true;
+    else if(a == "--geodesics") {
+      o.geodesics = value();
+      if(o.geodesics != "heat" && o.geodesics != "exact" && o.geodesics != "dijkstra")
+        throw Usage_error("--geodesics expects heat, exact or dijkstra, got '" + o.geodesics + "'");
+    }
+    else if(!a.empty() && a[0] == '-') throw Usage_error("unknown option " + a);
+    else if(o.mesh_path.empty()) o.mesh_path = a;
+    else throw Usage_error("more than one input mesh given: '" + o.mesh_path + "' and '" + a + "'");
+  }
+  if(o.out_dir.empty()) throw Usage_error("--out DIR is required");
+  if(o.mesh_path.empty() == o.shape.empty()) throw Usage_error("give either MESH or --shape NAME");
+  return o;
+}
+
+IRS::Generated_shape<Mesh> generate(const std::string& name)
+{
+  if(name == "sphere") return IRS::generate_sphere<Mesh>();
+  if(name == "ellipsoid") return IRS::generate_ellipsoid<Mesh>();
+  if(name == "capsule") return IRS::generate_capsule<Mesh>();
+  if(name == "torus") return IRS::generate_torus<Mesh>();
+  if(name == "snowman") return IRS::generate_snowman<Mesh>();
+  if(name == "two_snowmen") return IRS::generate_two_snowmen<Mesh>();
+  if(name == "bent_capsule") return IRS::generate_bent_capsule<Mesh>();
+  throw Usage_error("unknown shape '" + name +
+                    "' (sphere, ellipsoid, capsule, torus, snowman, two_snowmen, bent_capsule)");
+}
+
+template <typename Oracle>
+int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, irsym::Json& report)
+{
+  const fs::path out(opt.out_dir);
+  const IRS::Input_report stats = IRS::check_input(input);
+  {
+    irsym::Json in = irsym::Json::object();
+    in.add("vertices", stats.number_of_vertices).add("faces", stats.number_of_faces)
+      .add("edges", stats.number_of_edges)
+      .add("connected_components", stats.number_of_connected_components)
+      .add("boundary_cycles", stats.number_of_boundary_cycles)
+      .add("bounding_box_diagonal", stats.bounding_box_diagonal)
+      .add("mean_edge_length", stats.mean_edge_length).add("area", stats.area);
+    report.add("input", in);
+  }
+
+  log.start("prepare");
+  const auto prepared = opt.target_vertices > 0
+    ? IRS::prepare_mesh(input, IRS::parameters::target_number_of_vertices(std::size_t(opt.target_vertices))
+                                 .isotropic_remeshing(opt.remesh))
+    : IRS::prepare_mesh(input);
+  const Mesh& work = prepared.working_mesh();
+  log.stop();
+
+  log.start("sampling");
+  const std::size_t n_samples = opt.samples ? std::size_t(*opt.samples)
+                                            : (std::min)(std::size_t(3000), std::size_t(num_vertices(work)));
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(work, IRS::parameters::number_of_samples(n_samples).random_seed(opt.seed));
+  log.stop();
+
+  log.start("geodesic oracle (" + opt.geodesics + ")");
+  const Oracle oracle(work);
+  log.stop();
+
+  log.start("geodesic matrix");
+  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  log.stop();
+
+  log.start("signatures");
+  const std::vector<double> vertex_sdf = IRS::vertex_sdf_values(work);
+  const IRS::Sdf_signatures signatures = IRS::sdf_signatures(vertex_sdf, IRS::vertex_areas(work), D);
+  std::vector<std::pair<std::size_t, std::size_t>> similar;
+  IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
+  log.stop();
+
+  // ---- outputs, on the input mesh ----
+  {
+    std::ofstream s(out / "samples.txt");
+    for(std::size_t v : samples) s << prepared.working_to_input_vertex(v) << '\n';
+  }
+  const std::vector<double> sdf_in = IRS::transfer_vertex_field_to_input(prepared, vertex_sdf);
+  std::vector<double> first_row(D.row(0), D.row(0) + D.number_of_vertices());
+  const std::vector<double> geo_in = IRS::transfer_vertex_field_to_input(prepared, first_row);
+  irsym::Json files = irsym::Json::array();
+  auto emit = [&](const std::vector<double>& field, const std::string& name) {
+    const std::string ply = (out / (name + ".ply")).string();
+    if(!irsym::write_scalar_ply(input, field, name, ply))
+      throw std::runtime_error("cannot write " + ply);
+    files.push(irsym::Json::object().add("file", name + ".ply"));
+    if(irsym::render_png(ply, (out / (name + ".png")).string()))
+      files.push(irsym::Json::object().add("file", name + ".png"));
+  };
+  emit(sdf_in, "sdf");
+  emit(geo_in, "geodesics");
+
+  irsym::Json res = irsym::Json::object();
+  res.add("working_vertices", std::size_t(num_vertices(work)))
+     .add("working_faces", std::size_t(num_faces(work)))
+     .add("preparation", prepared.is_identity() ? "none" : "remeshed or decimated")
+     .add("samples", samples.size())
+     .add("largest_geodesic_distance", D.largest_finite_distance())
+     .add("sample_pairs", samples.size() * (samples.size() - 1) / 2)
+     .add("similar_sample_pairs", similar.size());
+  report.add("results", res);
+  report.add("outputs", files);
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options opt;
+  try { opt = parse_options(argc, argv); }
+  catch(const Usage_error& e) {
+    std::cerr << "irsym: " << e.what() << "\n(irsym --help lists the options)\n";
+    return 1;
+  }
+
+  const int threads = opt.threads > 0 ? opt.threads : int((std::max)(1u, std::thread::hardware_concurrency()));
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+#endif
+
+  irsym::Stage_log log;
+  irsym::Json report = irsym::Json::object();
+  try {
+    fs::create_directories(opt.out_dir);
+    Mesh input;
+    log.start("input");
+    if(!opt.shape.empty()) {
+      input = generate(opt.shape).mesh;
+      opt.mesh_path = (fs::path(opt.out_dir) / (opt.shape + ".off")).string();
+      CGAL::IO::write_polygon_mesh(opt.mesh_path, input, CGAL::parameters::stream_precision(17));
+    }
+    else
+      IRS::read_mesh(opt.mesh_path, input);
+    log.stop();
+
+    irsym::Json params = irsym::Json::object();
+    params.add("mesh", opt.mesh_path).add("shape", opt.shape)
+          .add("samples", opt.samples ? double(*opt.samples) : std::numeric_limits<double>::quiet_NaN())
+          .add("seed", opt.seed).add("geodesics", opt.geodesics).add("threads", threads)
+          .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh);
+    report.add("parameters", params);
+
+    int rc = 0;
+    if(opt.geodesics == "heat")
+      rc = run_pipeline<IRS::Heat_method_geodesic_oracle<Mesh>>(opt, input, log, report);
+    else if(opt.geodesics == "exact")
+      rc = run_pipeline<IRS::Exact_geodesic_oracle<Mesh>>(opt, input, log, report);
+    else
+      rc = run_pipeline<IRS::Dijkstra_geodesic_oracle<Mesh>>(opt, input, log, report);
+
+    report.add("stages", log.to_json());
+    report.add("total_seconds", log.total_seconds());
+    report.add("peak_memory_mib", irsym::peak_memory_mib());
+    const fs::path json = fs::path(opt.out_dir) / "report.json";
+    std::ofstream(json) << report.str() << '\n';
+    std::cerr << "[irsym] done in " << log.total_seconds() << " s; outputs in " << opt.out_dir << "\n";
+    return rc;
+  }
+  catch(const IRS::Input_error& e) {
+    std::cerr << "irsym: bad input: " << e.what() << '\n';
+    return 2;
+  }
+  catch(const Usage_error& e) {
+    std::cerr << "irsym: " << e.what() << "\n(irsym --help lists the options)\n";
+    return 1;
+  }
+  catch(const std::exception& e) {
+    std::cerr << "irsym: error: " << e.what() << '\n';
+    return 3;
+  }
+}

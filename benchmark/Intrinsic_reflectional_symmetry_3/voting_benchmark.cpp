@@ -1,0 +1,435 @@
+// IRSA transform benchmark: time per stage and peak memory of the whole
+// transform (heat-method geodesics, SDF signatures, voting) for growing
+// sample counts on CGAL's camel.off and man.off; fast voting vs the literal
+// reference of Alg. 1-2 side by side on the same input; and, with
+// --floor-study, the measurements behind the default of
+// `distance_tolerance_floor`. Prints tables; asserts nothing.
+//
+// usage: voting_benchmark [options] DIR...
+//   DIR...                directories searched for camel.off and man.off
+//                         (e.g. data/meshes of libcgal-demo's data.tar.gz)
+//   --samples a,b,...     sample counts (default 500,1000,2000,3000,5000)
+//   --meshes x,y,...      mesh file names (default camel.off,man.off)
+//   --threads N           threads of the parallel stages (default: all)
+//   --reference-samples N samples of the fast-vs-reference run (default 300; 0: skip)
+//   --floor-study         also run the distance-floor measurements
+//   --faust DIR           with --floor-study: FAUST folder with X.off and corres/X.{vts,sym.vts}
+
+#include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/reference_voting.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <Eigen/Dense>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace IRS = CGAL::Intrinsic_reflectional_symmetry_3;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef std::vector<std::pair<std::size_t, std::size_t>> Pairs;
+
+namespace {
+
+// peak resident memory (Linux; -1 elsewhere), and its reset (Linux >= 4.0)
+double peak_mb()
+{
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while(std::getline(in, line))
+    if(line.rfind("VmHWM:", 0) == 0)
+      return std::stod(line.substr(6)) / 1024.;
+  return -1.;
+}
+void reset_peak()
+{
+  std::ofstream out("/proc/self/clear_refs");
+  if(out) out << "5";
+}
+
+std::vector<std::string> split(const std::string& s)
+{
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while(std::getline(ss, item, ',')) out.push_back(item);
+  return out;
+}
+
+bool find_file(const std::vector<std::string>& dirs, const std::string& name, std::string& path)
+{
+  for(const std::string& d : dirs)
+  {
+    std::ifstream f(d + "/" + name);
+    if(f) { path = d + "/" + name; return true; }
+  }
+  return false;
+}
+
+Pairs similar_pairs(const Mesh& m, const IRS::Geodesic_distance_matrix& D, const std::vector<double>& sdf,
+                    const std::vector<double>& areas, double similarity_threshold = IRS::default_similarity_threshold)
+{
+  (void)m;
+  const IRS::Sdf_signatures sig = IRS::sdf_signatures(sdf, areas, D);
+  Pairs pairs;
+  IRS::similar_sample_pairs(sig, std::back_inserter(pairs), IRS::parameters::similarity_threshold(similarity_threshold));
+  return pairs;
+}
+
+double mean_edge(const Mesh& m)
+{
+  double s = 0.;
+  for(auto e : m.edges()) s += std::sqrt(CGAL::squared_distance(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1))));
+  return s / double(m.number_of_edges());
+}
+
+// ---------------------------------------------------------------- scaling
+
+void scaling(const std::string& path, const std::vector<std::size_t>& sample_counts)
+{
+  Mesh m;
+  CGAL::Real_timer t;
+  t.start();
+  if(!CGAL::IO::read_polygon_mesh(path, m) || is_empty(m)) { std::cout << "cannot read " << path << "\n"; return; }
+  const double t_read = t.time();
+  t.reset();
+  IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+  const double t_oracle = t.time();
+  t.reset();
+  const std::vector<double> sdf = IRS::vertex_sdf_values(m);
+  const std::vector<double> areas = IRS::vertex_areas(m);
+  const double t_sdf = t.time();
+  std::cout << "\n## " << path << ": " << num_vertices(m) << " vertices; read " << t_read << " s, heat-method oracle "
+            << t_oracle << " s, per-vertex SDF " << t_sdf << " s (once per mesh)\n\n"
+            << "| samples | FPS s | geodesic matrix s | signatures+pairs s | similar pairs | voting set-up s | voting s |"
+               " boundary | distance | locality | axial | support (CPU s) | voted | total s | peak MB |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for(std::size_t n : sample_counts)
+  {
+    if(n > num_vertices(m)) continue;
+    reset_peak();
+    CGAL::Real_timer total;
+    total.start();
+    t.reset();
+    const std::vector<std::size_t> samples =
+      IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
+    const double t_fps = t.time();
+    t.reset();
+    const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+    const double t_matrix = t.time();
+    t.reset();
+    const Pairs pairs = similar_pairs(m, D, sdf, areas);
+    const double t_sig = t.time();
+    auto tau = m.add_property_map<Mesh::Vertex_index, double>("v:tau", 0.).first;
+    const IRS::Irsa_voting_result r = IRS::compute_irsa_transform(m, D, pairs, tau);
+    const double t_total = total.time() + t_oracle + t_sdf; // the oracle and SDF are per mesh
+    std::cout << "| " << n << " | " << std::fixed << std::setprecision(2) << t_fps << " | " << t_matrix << " | "
+              << t_sig << " | " << pairs.size() << " | " << r.setup_seconds << " | " << r.voting_seconds;
+    for(double s : r.stage_seconds) std::cout << " | " << s;
+    std::cout << " | " << r.voting_pairs.size() << " | " << t_total << " | " << std::setprecision(0)
+              << peak_mb() << " |" << std::endl;
+    m.remove_property_map(tau);
+  }
+}
+
+// ---------------------------------------------------------------- fast vs reference
+
+void versus_reference(const std::string& path, std::size_t n, double similarity_threshold)
+{
+  Mesh m;
+  if(!CGAL::IO::read_polygon_mesh(path, m) || is_empty(m)) return;
+  IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
+  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const Pairs pairs = similar_pairs(m, D, IRS::vertex_sdf_values(m), IRS::vertex_areas(m), similarity_threshold);
+
+  CGAL::Real_timer t;
+  t.start();
+  std::vector<double> tau_ref;
+  const IRS::Irsa_voting_result ref = IRS::internal::reference_irsa_transform(m, D, pairs, tau_ref);
+  const double t_ref = t.time();
+  auto tau = m.add_property_map<Mesh::Vertex_index, double>("v:tau", 0.).first;
+  t.reset();
+  const IRS::Irsa_voting_result seq = IRS::compute_irsa_transform<CGAL::Sequential_tag>(m, D, pairs, tau);
+  const double t_seq = t.time();
+  std::vector<double> tau_seq(num_vertices(m));
+  for(auto v : m.vertices()) tau_seq[v.idx()] = tau[v];
+  t.reset();
+  const IRS::Irsa_voting_result par = IRS::compute_irsa_transform<CGAL::Parallel_if_available_tag>(m, D, pairs, tau);
+  const double t_par = t.time();
+  double max_rel = 0.;
+  std::size_t bit_different = 0;
+  for(auto v : m.vertices())
+  {
+    const double a = tau_ref[v.idx()], b = tau[v], c = tau_seq[v.idx()];
+    if(a != b || a != c) ++bit_different;
+    const double scale = (std::max)(std::abs(a), 1e-300);
+    max_rel = (std::max)({max_rel, std::abs(a - b) / scale, std::abs(a - c) / scale});
+  }
+  bool same_pairs = ref.voting_pairs.size() == par.voting_pairs.size();
+  for(std::size_t k = 0; same_pairs && k < ref.voting_pairs.size(); ++k)
+    same_pairs = ref.voting_pairs[k].eligible_pairs == par.voting_pairs[k].eligible_pairs &&
+                 ref.voting_pairs[k].boundary == par.voting_pairs[k].boundary;
+  std::cout << "\n## Fast voting vs the literal reference: " << path << ", " << n << " samples, similarity threshold "
+            << similarity_threshold << ": " << pairs.size() << " similar pairs, " << ref.voting_pairs.size()
+            << " voted\n\n"
+            << "| reference s | fast, 1 thread s | fast, parallel s | speed-up (1 thread) | speed-up (parallel) |"
+               " same voted pairs and eligible pairs | tau: max relative difference | bit-different values |\n"
+            << "|---|---|---|---|---|---|---|---|\n"
+            << "| " << std::setprecision(3) << t_ref << " | " << t_seq << " | " << t_par << " | " << std::setprecision(0)
+            << t_ref / t_seq << "x | " << t_ref / t_par << "x | " << (same_pairs ? "yes" : "NO") << " | "
+            << std::scientific << std::setprecision(1) << max_rel << std::fixed << " | " << bit_different << " |"
+            << std::endl;
+  (void)seq;
+}
+
+// ---------------------------------------------------------------- floor study
+
+// share of true mirror quadruples passing d(a,p)~d(b,q) and d(a,q)~d(b,p):
+// sample-level pairs (sample, sample nearest to its mirror vertex)
+void quadruple_study()
+{
+  std::cout << "\n## Distance filter: % of true mirror quadruples {a,b},{p,q} passing d(a,p)~d(b,q) and "
+               "d(a,q)~d(b,p) (eps 0.02), by floor (mean edge lengths)\n"
+               "Pairs: farthest-point samples and the sample nearest to the mirror vertex; heat-method geodesics.\n\n"
+               "| shape | symmetry | samples/vertices | floor 0 | 0.5 | 1 | 2 | 3 |\n|---|---|---|---|---|---|---|---|\n";
+  std::vector<std::pair<std::string, IRS::Generated_shape<Mesh>>> shapes;
+  shapes.emplace_back("ellipsoid", IRS::generate_ellipsoid<Mesh>(2500));
+  shapes.emplace_back("capsule", IRS::generate_capsule<Mesh>(2500));
+  shapes.emplace_back("snowman", IRS::generate_snowman<Mesh>(2500));
+  shapes.emplace_back("two snowmen", IRS::generate_two_snowmen<Mesh>(2500));
+  shapes.emplace_back("bent capsule", IRS::generate_bent_capsule<Mesh>(2500));
+  for(auto& sh : shapes)
+  {
+    const Mesh& m = sh.second.mesh;
+    IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+    for(double ratio : {0.25, 0.1})
+    {
+      const std::size_t ns = std::size_t(ratio * double(num_vertices(m)));
+      const auto samples = IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(1u));
+      const auto D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+      const IRS::internal::Sample_distance_matrix dss(D);
+      for(const auto& sym : sh.second.symmetries)
+      {
+        Pairs mp;
+        for(std::size_t i = 0; i < ns; ++i)
+        {
+          if(sym.mirror[samples[i]] < 0) continue;
+          const std::size_t mv = std::size_t(sym.mirror[samples[i]]);
+          std::size_t best = 0;
+          float bd = std::numeric_limits<float>::infinity();
+          for(std::size_t j = 0; j < ns; ++j)
+            if(D(j, mv) < bd) { bd = D(j, mv); best = j; }
+          if(best > i) mp.emplace_back(i, best);
+        }
+        std::cout << "| " << sh.first << " | " << sym.name << " | " << std::setprecision(2) << ratio;
+        for(double fl : {0., 0.5, 1., 2., 3.})
+        {
+          IRS::internal::Distance_tolerance tol;
+          tol.set(0.02, fl * sh.second.mean_edge_length);
+          std::size_t total = 0, pass = 0;
+          for(const auto& ab : mp)
+            for(const auto& pq : mp)
+            {
+              if(&ab == &pq) continue;
+              ++total;
+              pass += tol(dss(ab.first, pq.first), dss(ab.second, pq.second)) &&
+                      tol(dss(ab.first, pq.second), dss(ab.second, pq.first));
+            }
+          std::cout << " | " << std::setprecision(1) << (total ? 100. * double(pass) / double(total) : 0.);
+        }
+        std::cout << " |" << std::endl;
+      }
+    }
+  }
+}
+
+// mean tau over `axis` / mean tau, for several floors, with the SDF similarity filter
+void ridge_row(Mesh& m, const std::string& name, const std::vector<std::vector<char>>& axes,
+               const std::vector<std::string>& axis_names, std::size_t ns, const std::vector<double>& floors)
+{
+  IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+  const auto samples = IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(1u));
+  const auto D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const Pairs pairs = similar_pairs(m, D, IRS::vertex_sdf_values(m), IRS::vertex_areas(m));
+  for(double fl : floors)
+  {
+    auto tau = m.add_property_map<Mesh::Vertex_index, double>("v:tau", 0.).first;
+    const auto r = IRS::compute_irsa_transform(m, D, pairs, tau, IRS::parameters::distance_tolerance_floor(fl));
+    double sum = 0.;
+    for(auto v : m.vertices()) sum += tau[v];
+    std::cout << "| " << name << " | " << num_vertices(m) << " / " << ns << " | "
+              << std::setprecision(2) << 100. * double(pairs.size()) / (0.5 * double(ns) * double(ns - 1))
+              << " % | " << std::setprecision(1) << fl << " | " << r.voting_pairs.size() << " / "
+              << r.number_of_voting_pairs << " |";
+    for(std::size_t k = 0; k < axes.size(); ++k)
+    {
+      double s = 0.;
+      std::size_t c = 0;
+      for(auto v : m.vertices())
+        if(axes[k][v.idx()]) { s += tau[v]; ++c; }
+      std::cout << " " << axis_names[k] << ": " << std::setprecision(2)
+                << (c && sum > 0. ? (s / double(c)) / (sum / double(num_vertices(m))) : 0.);
+    }
+    std::cout << " | " << r.voting_seconds << " |" << std::endl;
+    m.remove_property_map(tau);
+  }
+}
+
+void ridge_study(const std::vector<std::string>& dirs, const std::string& faust)
+{
+  std::cout << "\n## Ridge contrast by floor, with the SDF similarity filter: mean tau on the known axis / mean tau\n"
+               "(generated shapes: vertices within one mean edge length of each known mirror plane; FAUST: the\n"
+               "ground-truth axis vertices; camel: within one mean edge of its best PCA mirror plane)\n\n"
+               "| shape | vertices / samples | similar | floor | voted / voting pairs | axis ratios | voting s |\n"
+               "|---|---|---|---|---|---|---|\n";
+  const std::vector<double> floors = {0., 0.5, 1., 2., 3.};
+  std::vector<std::pair<std::string, IRS::Generated_shape<Mesh>>> shapes;
+  shapes.emplace_back("ellipsoid", IRS::generate_ellipsoid<Mesh>(2000));
+  shapes.emplace_back("capsule", IRS::generate_capsule<Mesh>(2000));
+  shapes.emplace_back("snowman", IRS::generate_snowman<Mesh>(2000));
+  shapes.emplace_back("two snowmen", IRS::generate_two_snowmen<Mesh>(2000));
+  for(auto& sh : shapes)
+  {
+    Mesh& m = sh.second.mesh;
+    std::vector<std::vector<char>> axes;
+    std::vector<std::string> names;
+    for(const auto& s : sh.second.symmetries)
+    {
+      std::vector<char> on(num_vertices(m), 0);
+      for(auto v : m.vertices())
+      {
+        const auto p = m.point(v);
+        const double d = s.plane[0] * p.x() + s.plane[1] * p.y() + s.plane[2] * p.z() + s.plane[3];
+        on[v.idx()] = s.mirror[v.idx()] >= 0 && std::abs(d) <= sh.second.mean_edge_length;
+      }
+      axes.push_back(on);
+      names.push_back(s.name);
+    }
+    ridge_row(m, sh.first, axes, names, num_vertices(m) / 4, floors);
+  }
+  if(!faust.empty())
+    for(const char* id : {"tr_reg_000", "tr_reg_001", "tr_reg_010"})
+    {
+      Mesh m;
+      if(!CGAL::IO::read_polygon_mesh(faust + "/" + id + ".off", m)) continue;
+      std::vector<char> on(num_vertices(m), 0);
+      std::ifstream a(faust + "/corres/" + id + ".vts"), b(faust + "/corres/" + id + ".sym.vts");
+      std::size_t x, y;
+      while(a >> x && b >> y)
+        if(x == y && x >= 1 && x <= on.size()) on[x - 1] = 1;
+      ridge_row(m, std::string("FAUST ") + id, {on}, {"axis"}, num_vertices(m) / 4, floors);
+    }
+  std::string camel;
+  if(find_file(dirs, "camel.off", camel))
+  {
+    Mesh m;
+    CGAL::IO::read_polygon_mesh(camel, m);
+    // best of the three PCA planes through the centroid (nearest-vertex mirror error)
+    std::vector<Eigen::Vector3d> P;
+    for(auto v : m.vertices()) P.emplace_back(m.point(v).x(), m.point(v).y(), m.point(v).z());
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for(const auto& p : P) c += p;
+    c /= double(P.size());
+    Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+    for(const auto& p : P) C += (p - c) * (p - c).transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(C);
+    double best = std::numeric_limits<double>::infinity();
+    Eigen::Vector3d normal = es.eigenvectors().col(0);
+    for(int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d nk = es.eigenvectors().col(k);
+      double err = 0.;
+      for(std::size_t i = 0; i < P.size(); i += 20)
+      {
+        const Eigen::Vector3d r = P[i] - 2 * (P[i] - c).dot(nk) * nk;
+        double md = std::numeric_limits<double>::infinity();
+        for(const auto& q : P) md = (std::min)(md, (q - r).squaredNorm());
+        err += std::sqrt(md);
+      }
+      if(err < best) { best = err; normal = nk; }
+    }
+    const double e = mean_edge(m);
+    std::vector<char> on(P.size(), 0);
+    for(std::size_t i = 0; i < P.size(); ++i) on[i] = std::abs((P[i] - c).dot(normal)) <= e;
+    ridge_row(m, "camel", {on}, {"PCA plane"}, 1000, floors);
+  }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::vector<std::string> dirs;
+  std::vector<std::size_t> sample_counts = {500, 1000, 2000, 3000, 5000};
+  std::vector<std::string> meshes = {"camel.off", "man.off"};
+  std::size_t reference_samples = 300;
+  int threads = 0;
+  bool floor_study = false;
+  std::string faust;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(a == "--samples" && i + 1 < argc) { sample_counts.clear(); for(auto& s : split(argv[++i])) sample_counts.push_back(std::stoul(s)); }
+    else if(a == "--meshes" && i + 1 < argc) meshes = split(argv[++i]);
+    else if(a == "--threads" && i + 1 < argc) threads = std::stoi(argv[++i]);
+    else if(a == "--reference-samples" && i + 1 < argc) reference_samples = std::stoul(argv[++i]);
+    else if(a == "--floor-study") floor_study = true;
+    else if(a == "--faust" && i + 1 < argc) faust = argv[++i];
+    else dirs.push_back(a);
+  }
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::global_control> control;
+  if(threads > 0)
+    control.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, std::size_t(threads)));
+#endif
+  std::cout << "# IRSA transform benchmark (heat-method geodesics, SDF signatures, default voting parameters; "
+            << (threads > 0 ? std::to_string(threads) : std::string("all")) << " threads)\n"
+            << "Stage columns after 'voting s' are CPU seconds summed over threads.\n";
+  if(dirs.empty())
+    std::cout << "No mesh directory given: pass the directories holding camel.off / man.off.\n";
+  if(reference_samples > 0)
+  {
+    std::string camel;
+    // the paper's similarity threshold, and a looser one: the reference costs
+    // O(similar pairs^2 x |beta|), the fast voting about O(similar pairs x (V + similar pairs))
+    if(find_file(dirs, meshes.front(), camel))
+      for(double eps_sim : {IRS::default_similarity_threshold, 0.1})
+        versus_reference(camel, reference_samples, eps_sim);
+  }
+  for(const std::string& name : meshes)
+  {
+    std::string path;
+    if(find_file(dirs, name, path)) scaling(path, sample_counts);
+    else std::cout << "\n" << name << " not found in the given directories\n";
+  }
+  if(floor_study)
+  {
+    quadruple_study();
+    ridge_study(dirs, faust);
+  }
+  return 0;
+}

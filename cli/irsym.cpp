@@ -7,6 +7,7 @@
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/check_input.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/prepare_mesh.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
@@ -23,7 +24,9 @@
 
 #include "irsym_output.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <iomanip>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -49,7 +52,7 @@ usage: irsym MESH --out DIR [options]
   --shape NAME         use a generated shape instead of a file: sphere, ellipsoid,
                        capsule, torus, snowman, two_snowmen, bent_capsule
   --out DIR            output directory (created if missing)
-  --samples N          number of samples (default: min(3000, number of vertices))
+  --samples N          number of samples (default: min(3000, vertices / 4), the paper's ratio)
   --seed S             random seed (default: 0); same seed, same result
   --geodesics G        geodesic oracle: heat (default), exact or dijkstra
   --threads T          worker threads (default: all cores); results do not depend on it
@@ -61,6 +64,8 @@ usage: irsym MESH --out DIR [options]
 outputs in DIR:
   report.json          input statistics, parameters, time and peak memory per stage
   samples.txt          the samples, as input vertex ids (one per line)
+  tau.txt              the IRSA transform, one value per input vertex (input order)
+  transform.ply        input mesh coloured by the IRSA transform (vertex scalar 'transform')
   sdf.ply              input mesh coloured by the shape diameter function (SDF)
   geodesics.ply        input mesh coloured by the geodesic distance from the first sample
   *.png                pictures of the PLY files, where f3d and xvfb-run are installed
@@ -161,10 +166,9 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   log.stop();
 
   log.start("sampling");
-  const std::size_t n_samples = opt.samples ? std::size_t(*opt.samples)
-                                            : (std::min)(std::size_t(3000), std::size_t(num_vertices(work)));
-  const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(work, IRS::parameters::number_of_samples(n_samples).random_seed(opt.seed));
+  const std::vector<std::size_t> samples = opt.samples
+    ? IRS::farthest_point_samples(work, IRS::parameters::number_of_samples(std::size_t(*opt.samples)).random_seed(opt.seed))
+    : IRS::farthest_point_samples(work, IRS::parameters::random_seed(opt.seed));
   log.stop();
 
   log.start("geodesic oracle (" + opt.geodesics + ")");
@@ -180,6 +184,13 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   const IRS::Sdf_signatures signatures = IRS::sdf_signatures(vertex_sdf, IRS::vertex_areas(work), D);
   std::vector<std::pair<std::size_t, std::size_t>> similar;
   IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
+  log.stop();
+
+  log.start("IRSA transform (voting)");
+  std::vector<double> tau(num_vertices(work), 0.);
+  const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(
+    work, D, similar, boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
+    IRS::parameters::random_seed(opt.seed));
   log.stop();
 
   // ---- outputs, on the input mesh ----
@@ -199,6 +210,13 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     if(irsym::render_png(ply, (out / (name + ".png")).string()))
       files.push(irsym::Json::object().add("file", name + ".png"));
   };
+  const std::vector<double> tau_in = IRS::transfer_vertex_field_to_input(prepared, tau);
+  {
+    std::ofstream t(out / "tau.txt");
+    t << std::setprecision(9);
+    for(double x : tau_in) t << x << '\n';
+  }
+  emit(tau_in, "transform");
   emit(sdf_in, "sdf");
   emit(geo_in, "geodesics");
 
@@ -209,7 +227,13 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
      .add("samples", samples.size())
      .add("largest_geodesic_distance", D.largest_finite_distance())
      .add("sample_pairs", samples.size() * (samples.size() - 1) / 2)
-     .add("similar_sample_pairs", similar.size());
+     .add("similar_sample_pairs", similar.size())
+     .add("voting_pairs", voting.number_of_voting_pairs)
+     .add("voting_pairs_with_support", voting.voting_pairs.size())
+     .add("gaussian_width_sigma", voting.sigma)
+     .add("distance_tolerance_floor", voting.distance_tolerance_floor)
+     .add("locality_radius", voting.locality_radius)
+     .add("largest_tau", *std::max_element(tau.begin(), tau.end()));
   report.add("results", res);
   report.add("outputs", files);
   return 0;

@@ -151,16 +151,23 @@ inline CGAL::IO::Color colour_map(double t)
 }
 
 /// Writes `mesh` to `path` as binary PLY with a per-vertex scalar (named
-/// `name`) and the matching colour; values are normalised by their own
-/// min/max. Written here rather than with CGAL::IO::write_PLY, which always adds
+/// `name`) and the matching colour; the colour scale spans the 1st to the
+/// 99th percentile of the finite values, so that a few peaks do not flatten
+/// the rest of the field. Written here rather than with CGAL::IO::write_PLY, which always adds
 /// an alpha channel that f3d then renders as translucency.
 template <typename Point>
 bool write_scalar_ply(const CGAL::Surface_mesh<Point>& mesh, const std::vector<double>& values,
                       const std::string& name, const std::string& path)
 {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  std::vector<double> finite;
   for(double v : values)
-    if(std::isfinite(v)) { lo = std::min(lo, v); hi = std::max(hi, v); }
+    if(std::isfinite(v)) finite.push_back(v);
+  double lo = 0., hi = 1.;
+  if(!finite.empty()) {
+    std::sort(finite.begin(), finite.end());
+    lo = finite[finite.size() / 100];
+    hi = finite[finite.size() - 1 - finite.size() / 100];
+  }
   const double range = hi > lo ? hi - lo : 1.0;
 
   std::ofstream out(path, std::ios::binary);

@@ -14,7 +14,7 @@ endfunction()
 
 # 1. the main job on a generated shape
 run(0 --shape snowman --samples 200 --seed 3 --threads 2 --out ${WORK_DIR}/snowman)
-foreach(f report.json samples.txt sdf.ply geodesics.ply snowman.off)
+foreach(f report.json samples.txt tau.txt transform.ply sdf.ply geodesics.ply snowman.off)
   if(NOT EXISTS ${WORK_DIR}/snowman/${f})
     message(FATAL_ERROR "missing output ${f}")
   endif()

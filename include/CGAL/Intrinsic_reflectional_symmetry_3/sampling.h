@@ -55,7 +55,7 @@ namespace Intrinsic_reflectional_symmetry_3 {
 ///   \cgalParamNBegin{number_of_samples}
 ///     \cgalParamDescription{how many vertices to select}
 ///     \cgalParamType{`int` (or `std::size_t`), between 1 and `num_vertices(tm)`}
-///     \cgalParamDefault{`min(3000, num_vertices(tm))`}
+///     \cgalParamDefault{`min(3000, ceil(num_vertices(tm) / 4))`: the paper used 2K-5K samples on 10K-15K vertices}
 ///     \cgalParamExtra{the package's `IRS::parameters::number_of_samples()`; CGAL's
 ///                     `CGAL::parameters::number_of_samples()` is read too when the former is absent}
 ///   \cgalParamNEnd
@@ -94,7 +94,7 @@ farthest_point_samples(const PolygonMesh& tm, const CGAL_NP_CLASS& np = paramete
   if(n == 0)
     throw Input_error(Input_problem::empty_mesh, "the mesh has no vertices");
 
-  const long long default_samples = static_cast<long long>((std::min)(n, std::size_t(3000)));
+  const long long default_samples = static_cast<long long>((std::min)((n + 3) / 4, std::size_t(3000)));
   const long long requested = static_cast<long long>(
     choose_parameter(get_parameter(np, internal_np::number_of_samples),
                      choose_parameter(get_parameter(np, CGAL::internal_np::number_of_samples),

@@ -245,7 +245,7 @@ void quadruple_study()
             if(D(j, mv) < bd) { bd = D(j, mv); best = j; }
           if(best > i) mp.emplace_back(i, best);
         }
-        std::cout << "| " << sh.first << " | " << sym.name << " | " << std::setprecision(2) << ratio;
+        std::cout << "| " << sh.first << " | " << sym.name << " | " << std::fixed << std::setprecision(2) << ratio;
         for(double fl : {0., 0.5, 1., 2., 3.})
         {
           IRS::internal::Distance_tolerance tol;
@@ -281,7 +281,7 @@ void ridge_row(Mesh& m, const std::string& name, const std::vector<std::vector<c
     const auto r = IRS::compute_irsa_transform(m, D, pairs, tau, IRS::parameters::distance_tolerance_floor(fl));
     double sum = 0.;
     for(auto v : m.vertices()) sum += tau[v];
-    std::cout << "| " << name << " | " << num_vertices(m) << " / " << ns << " | "
+    std::cout << "| " << name << " | " << num_vertices(m) << " / " << ns << " | " << std::fixed
               << std::setprecision(2) << 100. * double(pairs.size()) / (0.5 * double(ns) * double(ns - 1))
               << " % | " << std::setprecision(1) << fl << " | " << r.voting_pairs.size() << " / "
               << r.number_of_voting_pairs << " |";

@@ -9,8 +9,6 @@
 // similar to the sample nearest to the mirror image of its vertex) plus a
 // share of random "noise" pairs that the filters must reject.
 
-// The heat-method oracle first: a header it pulls in must come before
-// shape_generators.h (include-order issue in internal/component_meshes.h).
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>

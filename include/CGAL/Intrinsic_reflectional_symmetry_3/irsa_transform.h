@@ -75,8 +75,10 @@ struct Irsa_voting_result
   std::size_t number_of_pairs_after_axial = 0;    ///< of those, pairs passing the axial-sym filter, summed
   double setup_seconds = 0.;          ///< wall time of the set-up (checks, sample matrix)
   double voting_seconds = 0.;         ///< wall time of the voting proper (with its indices)
-  /// CPU time (summed over threads) of the stages of the voting: boundary,
-  /// distance filter, locality filter, axial-sym filter, support along the boundary
+  /// time spent in each stage of the voting, summed over the threads (wall
+  /// clock inside the stage, so it counts waiting on a busy machine): beta and
+  /// m, the distance filter, the locality filter, the axial-sym filter, mu
+  /// along beta
   double stage_seconds[5] = {0., 0., 0., 0., 0.};
 };
 
@@ -102,22 +104,10 @@ Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& t
   fill_result_header(s, result);
   tau.assign(s.mesh.number_of_vertices, 0.);
 
-  Fast_voting fv(s, std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value);
+  const bool parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
   const std::size_t nvote = s.voting_pairs.size();
   std::vector<Irsa_voting_pair> records(nvote);
   std::vector<unsigned char> outcome(nvote, 0);
-  auto do_pair = [&](std::size_t k, Fast_voting::Scratch& sc) {
-    Irsa_voting_pair& r = records[k];
-    r.a = s.similar_pairs[s.voting_pairs[k]].first;
-    r.b = s.similar_pairs[s.voting_pairs[k]].second;
-    outcome[k] = (unsigned char)fv.vote(r.a, r.b, sc, r.midpoint, r.boundary, r.support, r.eligible_pairs);
-    if(outcome[k] != Fast_voting::voted)
-    {
-      std::vector<std::size_t>().swap(r.boundary);
-      std::vector<double>().swap(r.support);
-    }
-  };
-
   auto collect = [&](const Fast_voting::Scratch& sc) {
     for(int i = 0; i < 5; ++i) result.stage_seconds[i] += sc.stage_seconds[i];
     result.number_of_candidate_pairs += sc.total_candidates;
@@ -125,36 +115,51 @@ Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& t
     result.number_of_pairs_after_axial += sc.total_after_axial;
   };
 
+  // every pair is computed alone (the scratch buffers only avoid allocations)
+  auto run = [&] {
+    const Fast_voting fv(s, parallel);
+    auto do_pair = [&](std::size_t k, Fast_voting::Scratch& sc) {
+      Irsa_voting_pair& r = records[k];
+      r.a = s.similar_pairs[s.voting_pairs[k]].first;
+      r.b = s.similar_pairs[s.voting_pairs[k]].second;
+      outcome[k] = (unsigned char)fv.vote(r.a, r.b, sc, r.midpoint, r.boundary, r.support, r.eligible_pairs);
+      if(outcome[k] != Fast_voting::voted)
+      {
+        std::vector<std::size_t>().swap(r.boundary);
+        std::vector<double>().swap(r.support);
+      }
+    };
 #ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-  {
-    // each pair is computed alone; scratch buffers only avoid allocations
-    tbb::enumerable_thread_specific<Fast_voting::Scratch> scratch([&] { return fv.make_scratch(); });
-    auto body = [&] {
+    if(parallel)
+    {
+      tbb::enumerable_thread_specific<Fast_voting::Scratch> scratch([&] { return fv.make_scratch(); });
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nvote, 8),
                         [&](const tbb::blocked_range<std::size_t>& range) {
                           Fast_voting::Scratch& sc = scratch.local();
                           for(std::size_t k = range.begin(); k != range.end(); ++k)
                             do_pair(k, sc);
                         });
-    };
-    if(number_of_threads > 0)
-    {
-      tbb::task_arena arena(number_of_threads);
-      arena.execute(body);
+      for(const auto& sc : scratch) collect(sc);
+      return;
     }
-    else
-      body();
-    for(const auto& sc : scratch) collect(sc);
+#endif
+    Fast_voting::Scratch sc = fv.make_scratch();
+    for(std::size_t k = 0; k < nvote; ++k)
+      do_pair(k, sc);
+    collect(sc);
+  };
+
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel && number_of_threads > 0)
+  {
+    tbb::task_arena arena(number_of_threads);
+    arena.execute(run);
   }
   else
 #endif
   {
     (void)number_of_threads;
-    Fast_voting::Scratch sc = fv.make_scratch();
-    for(std::size_t k = 0; k < nvote; ++k)
-      do_pair(k, sc);
-    collect(sc);
+    run();
   }
 
   // deterministic reduction: pairs in canonical order, boundary in order
@@ -239,15 +244,15 @@ Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& t
 /// the end is the ridge of tau on the symmetry axis (mean tau on the axis /
 /// mean tau), with the package's SDF similarity filter:
 /// - real shapes, where the similarity filter passes ~0.5-1 % of the pairs:
-///   FAUST humans (5K vertices, 1250 samples, 3 shapes): 1.8-4.4 with floor 0,
-///   4.7-7.3 with 1, 7.2-9.3 with 2, 8.5-12.8 with 3; CGAL's camel (1000
+///   FAUST humans (5K vertices, 1250 samples, 3 shapes): 1.8-4.8 with floor 0,
+///   4.7-7.3 with 1, 7.4-9.6 with 2, 8.7-13 with 3; CGAL's camel (1000
 ///   samples): 3.2, 4.6, 4.0, 3.4 for floors 0, 1, 2, 3. With floor 0 almost
-///   nothing votes (camel: 9 of 2191 voting pairs).
+///   nothing votes (camel: 9 of 2191 voting pairs, FAUST: 25-87 of 6-8K).
 /// - the generated shapes (exactly symmetric meshes whose smooth parts make
 ///   the similarity filter pass 5-75 % of the pairs) are the opposite case:
-///   floor 0 gives the clearest ridges (ellipsoid 13.9, capsule 5.0) and a
-///   floor of 1 or more lets so many unrelated pairs through that the ridges
-///   fade (ellipsoid 1.8-2.7).
+///   floor 0 gives the clearest ridges (ellipsoid 14, capsule 5.0, 2K vertices,
+///   1/4 as many samples) and a floor of 1 or more lets so many unrelated
+///   pairs through that the ridges fade (ellipsoid 1.7-2.6, capsule 1.0-1.6).
 /// The default, 2 mean edge lengths, follows the real shapes; use 0 (the
 /// paper's setting) when the similarity filter passes many pairs on an
 /// exactly symmetric model. The benchmark `voting_benchmark --floor-study`

@@ -26,16 +26,19 @@
 
 // The fast per-pair voting of Alg. 1-2. It computes exactly what the literal
 // reference (reference_voting.h) computes, in another order:
-// - beta(a,b): the bisector test is only run in the vertex blocks where the
-//   sign of f = d(a,.) - d(b,.) can change (a block whose vertices all have
-//   the same strict sign, like all its neighbouring blocks, holds no crossing);
-// - candidate partners q of p come from a grid over (d(b,q), d(a,q)), queried
-//   at the mirrored point (d(a,p), d(b,p)), instead of a scan of all pairs;
-// - locality (DBSCAN) and axial counts are computed once per {a,b}, DBSCAN with
-//   precomputed sample neighbourhoods, the axial counts on a small local matrix;
+// - beta(a,b): f = d(a,.) - d(b,.) in one sweep of the two rows of D; the
+//   bisector test then only runs in the vertex blocks where f can change sign
+//   (per-block bounds decide most blocks from one vertex);
+// - the three m'-independent distance tests: one scan of the similar pairs,
+//   grouped by first sample, with a pair of windows per sample (or a grid
+//   range query over (d(b,q), d(a,q)) when the similar pairs are many);
+// - locality (DBSCAN) and the axial counts once per {a,b}: DBSCAN with
+//   precomputed sample neighbourhoods, the axial counts on rows of the
+//   transposed sample matrix with an early stop per pair;
 // - the loop over m' in beta only evaluates d(p,m') ~ d(q,m') and the Gaussian.
 // Votes are summed in the order of the canonical pair list, as the reference
 // does, so mu and tau are bit-identical to it.
+// Define CGAL_IRS_VOTING_STATS for a few extra counters (profiling only).
 
 #ifndef CGAL_IRS_VOTING_STAGE
 #define CGAL_IRS_VOTING_STAGE // profiling builds define it as a no-inline attribute
@@ -67,12 +70,13 @@ public:
     std::vector<std::size_t> points;          // U, increasing sample indices
     std::vector<int> labels;
     std::vector<std::size_t> kept;            // indices into candidates
-    std::vector<std::size_t> local_points, ps, qs;
+    std::vector<std::size_t> cursor;          // grid construction
     std::vector<std::uint32_t> ss, ts;        // the kept pairs' samples
     std::vector<std::uint32_t> counts, order, os, ot, cs, ct;
     std::vector<std::size_t> compared;
 #ifdef CGAL_IRS_VOTING_STATS
-    std::size_t stat_scanned_blocks = 0, stat_unknown_blocks = 0, stat_m_tests = 0, stat_m_rows = 0, stat_queries = 0, stat_axial_checks = 0, stat_axial_pairs = 0, stat_axial_e2 = 0;
+    std::size_t stat_scanned_blocks = 0, stat_unknown_blocks = 0;
+    std::size_t stat_axial_checks = 0, stat_axial_pairs = 0, stat_axial_e2 = 0;
 #endif
     // CPU seconds spent in each stage, summed over the pairs this scratch saw:
     // boundary, candidates (distance filter), locality, axial, support
@@ -516,7 +520,7 @@ private:
     for(std::size_t c = 0; c < g * g; ++c)
       sc.cell_start[c + 1] += sc.cell_start[c];
     sc.cell_items.resize(sc.b_side.size());
-    std::vector<std::size_t>& fill = sc.ps; // reused as a cursor array
+    std::vector<std::size_t>& fill = sc.cursor;
     fill.assign(sc.cell_start.begin(), sc.cell_start.end() - 1);
     for(std::size_t q : sc.b_side)
       sc.cell_items[fill[cell_of(dB[q]) * g + cell_of(dA[q])]++] = q;

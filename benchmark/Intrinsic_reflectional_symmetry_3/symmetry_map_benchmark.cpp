@@ -1,0 +1,425 @@
+// Copyright (c) 2026 The Intrinsic_reflectional_symmetry_3 project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Author(s)     : The Intrinsic_reflectional_symmetry_3 developers
+//
+// Quality of the symmetric map on real posed humans: the whole pipeline
+// (farthest-point samples, heat-method geodesics, SDF signatures and the
+// similarity filter, IRSA voting, curve extraction, symmetric regions and
+// map) on FAUST (19 shapes, dense ground truth) and on the SCAPE meshes of
+// the Kim et al. benchmark (sparse ground truth), evaluated by the protocol
+// of Kim, Lipman, Chen, Funkhouser (SGP 2010): for every ground-truth mirror
+// pair (x, y), both ways, e = d(map(x), y) / sqrt(area), geodesic distances
+// along the mesh edges (Dijkstra; as ../shared/tools/eval_symmetry.py does);
+// CR = share of checks with e <= sqrt(1 / (20 pi)), an unmapped x counting
+// as a failure. Also: share with e <= 0.25, mean e over mapped checks,
+// coverage, the distance from the ground-truth axis points to the top curve
+// (over sqrt(area)), and the time per shape (wall clock).
+//
+// usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME]
+//                               [--write DIR] [--threads T] [--no-scape] [--no-faust]
+//   DATA_DIR  default ../shared/data (relative to the current directory);
+//             faust_5k/ and kim_bim_benchmark/ inside it, each skipped if absent
+//   N         samples per shape (default 1000)
+//   NAME      only the shapes whose name contains NAME
+//   DIR       write NAME.map (partner per vertex, -1 for none) and
+//             NAME.curves (one curve per line) there, the input formats of
+//             eval_symmetry.py (for SCAPE: of the mended mesh, written as NAME.off)
+
+#include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/check_input.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/symmetric_map.h>
+
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace IRS = CGAL::Intrinsic_reflectional_symmetry_3;
+namespace fs = std::filesystem;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex;
+
+namespace {
+
+const double kim_threshold = std::sqrt(1. / (20. * CGAL_PI));
+
+struct Options
+{
+  std::string data = "../shared/data";
+  std::size_t samples = 1000;
+  std::string only, write;
+  int threads = 0;
+  bool faust = true, scape = true;
+};
+
+struct Pipeline_result
+{
+  std::vector<IRS::Irsa_curve> curves;
+  std::vector<std::ptrdiff_t> partner; // by vertex index
+  std::size_t similar_pairs = 0, voting_pairs = 0, region_faces = 0;
+  double seconds[6] = {0., 0., 0., 0., 0., 0.}; // geodesics, signatures, voting, curves, map, total
+};
+
+// the package's pipeline with its defaults; only the number of samples and the seed are set
+Pipeline_result run_pipeline(const Mesh& m, std::size_t number_of_samples)
+{
+  Pipeline_result r;
+  CGAL::Real_timer total, t;
+  total.start();
+  t.start();
+  const std::size_t ns = (std::min)(number_of_samples, std::size_t(num_vertices(m)));
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(0u));
+  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  r.seconds[0] = t.time(); t.reset();
+
+  const IRS::Sdf_signatures signatures = IRS::sdf_signatures(IRS::vertex_sdf_values(m), IRS::vertex_areas(m), D);
+  std::vector<std::pair<std::size_t, std::size_t>> similar;
+  IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
+  r.similar_pairs = similar.size();
+  r.seconds[1] = t.time(); t.reset();
+
+  auto tau = get(CGAL::dynamic_vertex_property_t<double>(), m);
+  const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(m, D, similar, tau);
+  r.voting_pairs = voting.voting_pairs.size();
+  r.seconds[2] = t.time(); t.reset();
+
+  IRS::extract_irsa_curves(m, D, voting, tau, std::back_inserter(r.curves));
+  r.seconds[3] = t.time(); t.reset();
+
+  auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
+  IRS::symmetric_vertex_map(m, D, r.curves, partner);
+  auto region = get(CGAL::dynamic_face_property_t<int>(), m);
+  r.region_faces = IRS::symmetric_regions(m, D, r.curves, region);
+  r.partner.assign(num_vertices(m), -1);
+  for(Vertex v : vertices(m)) r.partner[v.idx()] = get(partner, v);
+  r.seconds[4] = t.time();
+  r.seconds[5] = total.time();
+  return r;
+}
+
+struct Metrics
+{
+  std::size_t checks = 0, covered = 0, correct = 0, within_025 = 0;
+  double error_sum = 0.;
+  double axis_mean = std::numeric_limits<double>::quiet_NaN(), axis_max = axis_mean;
+  double cr() const { return checks ? 100. * double(correct) / double(checks) : 0.; }
+  double coverage() const { return checks ? 100. * double(covered) / double(checks) : 0.; }
+  double le025() const { return checks ? 100. * double(within_025) / double(checks) : 0.; }
+  double mean_error() const { return covered ? error_sum / double(covered) : std::numeric_limits<double>::quiet_NaN(); }
+};
+
+// pairs (x, y), vertex indices of `m`; axis points are pairs (x, x)
+Metrics evaluate(const Mesh& m, const std::vector<std::pair<std::size_t, std::size_t>>& gt,
+                 const Pipeline_result& r)
+{
+  Metrics out;
+  const double sqrt_area = std::sqrt(CGAL::to_double(CGAL::Polygon_mesh_processing::area(m)));
+  const IRS::Dijkstra_geodesic_oracle<Mesh> dijkstra(m); // edge-graph geodesics, as eval_symmetry.py
+  std::vector<float> d(num_vertices(m));
+  for(int way = 0; way < 2; ++way)
+    for(const auto& xy : gt)
+    {
+      const std::size_t x = way ? xy.second : xy.first, y = way ? xy.first : xy.second;
+      ++out.checks;
+      if(r.partner[x] < 0) continue;
+      ++out.covered;
+      dijkstra.distances_from(y, d.data());
+      const double e = double(d[std::size_t(r.partner[x])]) / sqrt_area;
+      out.error_sum += e;
+      out.correct += (e <= kim_threshold);
+      out.within_025 += (e <= 0.25);
+    }
+  // axis: distance from each ground-truth axis point to the nearest vertex of the top curve
+  if(!r.curves.empty())
+  {
+    const std::vector<std::size_t> curve = r.curves.front().vertices();
+    double sum = 0., mx = 0.;
+    std::size_t n = 0;
+    for(const auto& xy : gt)
+    {
+      if(xy.first != xy.second) continue;
+      dijkstra.distances_from(xy.first, d.data());
+      double best = std::numeric_limits<double>::infinity();
+      for(std::size_t v : curve) best = (std::min)(best, double(d[v]));
+      sum += best / sqrt_area;
+      mx = (std::max)(mx, best / sqrt_area);
+      ++n;
+    }
+    if(n > 0) { out.axis_mean = sum / double(n); out.axis_max = mx; }
+  }
+  return out;
+}
+
+std::vector<long> read_integers(const fs::path& p, bool first_column_only)
+{
+  std::ifstream in(p);
+  std::vector<long> out;
+  std::string line;
+  while(std::getline(in, line))
+  {
+    std::istringstream is(line);
+    long x;
+    if(first_column_only) { if(is >> x) out.push_back(x); }
+    else while(is >> x) out.push_back(x);
+  }
+  return out;
+}
+
+void write_outputs(const Options& o, const std::string& name, const Pipeline_result& r)
+{
+  if(o.write.empty()) return;
+  fs::create_directories(o.write);
+  std::ofstream map(fs::path(o.write) / (name + ".map"));
+  for(std::ptrdiff_t p : r.partner) map << p << '\n';
+  std::ofstream curves(fs::path(o.write) / (name + ".curves"));
+  for(const auto& c : r.curves)
+  {
+    for(std::size_t v : c.vertices()) curves << v << ' ';
+    curves << '\n';
+  }
+}
+
+void print_header()
+{
+  std::cout << std::left << std::setw(12) << "shape" << std::right << std::setw(7) << "V" << std::setw(8) << "samples"
+            << std::setw(7) << "curves" << std::setw(9) << "cover%" << std::setw(8) << "CR%" << std::setw(8) << "e<=.25"
+            << std::setw(9) << "mean e" << std::setw(10) << "axis mean" << std::setw(9) << "axis max"
+            << std::setw(8) << "geod s" << std::setw(7) << "sig s" << std::setw(8) << "vote s" << std::setw(8)
+            << "curve s" << std::setw(7) << "map s" << std::setw(8) << "total s" << '\n';
+}
+
+void print_row(const std::string& name, const Mesh& m, std::size_t samples, const Pipeline_result& r, const Metrics& e)
+{
+  std::cout << std::left << std::setw(12) << name << std::right << std::setw(7) << num_vertices(m) << std::setw(8)
+            << samples << std::setw(7) << r.curves.size() << std::fixed << std::setprecision(2) << std::setw(9)
+            << e.coverage() << std::setw(8) << e.cr() << std::setw(8) << e.le025() << std::setprecision(4)
+            << std::setw(9) << e.mean_error() << std::setw(10) << e.axis_mean << std::setw(9) << e.axis_max
+            << std::setprecision(2) << std::setw(8) << r.seconds[0] << std::setw(7) << r.seconds[1] << std::setw(8)
+            << r.seconds[2] << std::setw(8) << r.seconds[3] << std::setw(7) << r.seconds[4] << std::setw(8)
+            << r.seconds[5] << std::endl;
+}
+
+struct Summary
+{
+  std::vector<double> cr, le025, err, cover, axis, time;
+  void add(const Metrics& e, const Pipeline_result& r)
+  {
+    cr.push_back(e.cr()); le025.push_back(e.le025()); err.push_back(e.mean_error());
+    cover.push_back(e.coverage()); axis.push_back(e.axis_mean); time.push_back(r.seconds[5]);
+  }
+  static double mean(const std::vector<double>& v)
+  {
+    double s = 0.;
+    std::size_t n = 0;
+    for(double x : v) if(std::isfinite(x)) { s += x; ++n; }
+    return n ? s / double(n) : std::numeric_limits<double>::quiet_NaN();
+  }
+  void print(const std::string& what) const
+  {
+    if(cr.empty()) return;
+    std::cout << std::left << std::setw(34) << what << std::right << std::fixed << " n=" << std::setw(2) << cr.size()
+              << std::setprecision(2) << "  CR " << std::setw(6) << mean(cr) << " %  (min " << std::setw(6)
+              << *std::min_element(cr.begin(), cr.end()) << ")  e<=0.25 " << std::setw(6) << mean(le025)
+              << " %  coverage " << std::setw(6) << mean(cover) << " %  mean e " << std::setprecision(4)
+              << mean(err) << "  axis mean " << mean(axis) << std::setprecision(2) << "  time " << mean(time)
+              << " s/shape" << std::endl;
+  }
+};
+
+void run_faust(const Options& o)
+{
+  const fs::path dir = fs::path(o.data) / "faust_5k" / "faust";
+  if(!fs::is_directory(dir))
+  {
+    std::cout << "FAUST: " << dir.string() << " not found, skipped\n";
+    return;
+  }
+  std::vector<std::string> names;
+  for(const auto& entry : fs::directory_iterator(dir))
+    if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  std::cout << "\nFAUST (" << dir.string() << "): dense ground truth corres/X.vts <-> corres/X.sym.vts\n";
+  print_header();
+  Summary all, rest, posed;
+  for(const std::string& name : names)
+  {
+    if(!o.only.empty() && name.find(o.only) == std::string::npos) continue;
+    const std::vector<long> x = read_integers(dir / "corres" / (name + ".vts"), true);
+    const std::vector<long> y = read_integers(dir / "corres" / (name + ".sym.vts"), true);
+    if(x.empty() || x.size() != y.size())
+    {
+      std::cout << name << ": no ground truth, skipped\n";
+      continue;
+    }
+    Mesh m;
+    try { IRS::read_mesh((dir / (name + ".off")).string(), m); IRS::check_input(m); }
+    catch(const IRS::Input_error& e) { std::cout << name << ": " << e.what() << ", skipped\n"; continue; }
+    std::vector<std::pair<std::size_t, std::size_t>> gt;
+    for(std::size_t k = 0; k < x.size(); ++k)
+      if(x[k] >= 1 && y[k] >= 1 && std::size_t(x[k]) <= num_vertices(m) && std::size_t(y[k]) <= num_vertices(m))
+        gt.emplace_back(std::size_t(x[k] - 1), std::size_t(y[k] - 1)); // 1-based
+    const Pipeline_result r = run_pipeline(m, o.samples);
+    const Metrics e = evaluate(m, gt, r);
+    print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
+    write_outputs(o, name, r);
+    all.add(e, r);
+    // tr_reg_000 .. 009: subject 0 in poses 0..9; tr_reg_010, 020, ...: pose 0 of subjects 1..9
+    const int id = std::atoi(name.substr(name.size() - 3).c_str());
+    (id % 10 == 0 ? rest : posed).add(e, r);
+  }
+  std::cout << '\n';
+  all.print("FAUST, all shapes");
+  rest.print("FAUST, pose 0 (tr_reg_0X0)");
+  posed.print("FAUST, posed (tr_reg_001..009)");
+  std::cout << "peers on the same 19 shapes (../shared/tools/README.md): GPS 93.6 % CR, extrinsic mirror plane 88.6 % CR\n";
+}
+
+void run_scape(const Options& o)
+{
+  const fs::path dir = fs::path(o.data) / "kim_bim_benchmark" / "scape";
+  if(!fs::is_directory(dir / "meshes"))
+  {
+    std::cout << "SCAPE: " << (dir / "meshes").string() << " not found, skipped\n";
+    return;
+  }
+  // ground truth: feature points (0-based vertex ids) and their mirror orbits
+  const std::vector<long> points = read_integers(dir / "corrs" / "1.pid", true);
+  std::vector<std::pair<long, long>> orbits; // feature indices; (i, i) on the axis
+  {
+    std::ifstream in(dir / "corrs" / "1.sym.info");
+    std::string line;
+    while(std::getline(in, line))
+    {
+      std::istringstream is(line);
+      std::vector<long> ids;
+      long v;
+      while(is >> v) ids.push_back(v);
+      if(ids.size() == 1) orbits.emplace_back(ids[0], ids[0]);
+      else if(ids.size() == 2) orbits.emplace_back(ids[0], ids[1]);
+    }
+  }
+  std::vector<std::string> names;
+  for(const auto& entry : fs::directory_iterator(dir / "meshes"))
+    if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  std::cout << "\nSCAPE (" << dir.string() << "): sparse ground truth, " << orbits.size()
+            << " orbits of 1.pid (pairs and axis points); each mesh's pinched vertex mended by repair_input()\n";
+  print_header();
+  Summary all;
+  for(const std::string& name : names)
+  {
+    if(!o.only.empty() && name.find(o.only) == std::string::npos) continue;
+    Mesh input, m;
+    IRS::Input_repairs repairs;
+    try
+    {
+      IRS::read_mesh((dir / "meshes" / (name + ".off")).string(), input);
+      repairs = IRS::repair_input(input, m);
+      IRS::check_input(m);
+    }
+    catch(const IRS::Input_error& e) { std::cout << name << ": " << e.what() << ", skipped\n"; continue; }
+    // input vertex -> first vertex of the mended mesh that comes from it
+    std::vector<std::ptrdiff_t> to_mended(num_vertices(input), -1);
+    for(std::size_t v = 0; v < repairs.output_to_input_vertex.size(); ++v)
+      if(to_mended[repairs.output_to_input_vertex[v]] < 0) to_mended[repairs.output_to_input_vertex[v]] = std::ptrdiff_t(v);
+    std::vector<std::pair<std::size_t, std::size_t>> gt;
+    for(const auto& ij : orbits)
+    {
+      if(ij.first < 0 || ij.second < 0 || std::size_t(ij.first) >= points.size() ||
+         std::size_t(ij.second) >= points.size()) continue;
+      const long a = points[std::size_t(ij.first)], b = points[std::size_t(ij.second)];
+      if(a < 0 || b < 0 || std::size_t(a) >= to_mended.size() || std::size_t(b) >= to_mended.size()) continue;
+      if(to_mended[std::size_t(a)] < 0 || to_mended[std::size_t(b)] < 0) continue;
+      gt.emplace_back(std::size_t(to_mended[std::size_t(a)]), std::size_t(to_mended[std::size_t(b)]));
+    }
+    const Pipeline_result r = run_pipeline(m, o.samples);
+    const Metrics e = evaluate(m, gt, r);
+    print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
+    if(!o.write.empty())
+    {
+      write_outputs(o, name, r);
+      CGAL::IO::write_polygon_mesh((fs::path(o.write) / (name + ".off")).string(), m,
+                                   CGAL::parameters::stream_precision(17));
+      std::ofstream fx(fs::path(o.write) / (name + ".vts")), fy(fs::path(o.write) / (name + ".sym.vts"));
+      for(const auto& xy : gt) { fx << xy.first + 1 << '\n'; fy << xy.second + 1 << '\n'; }
+    }
+    all.add(e, r);
+  }
+  std::cout << '\n';
+  all.print("SCAPE, all meshes");
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options o;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc) { std::cerr << a << " expects a value\n"; std::exit(1); }
+      return argv[++i];
+    };
+    if(a == "--samples") o.samples = std::size_t(std::max(1L, std::atol(value().c_str())));
+    else if(a == "--only") o.only = value();
+    else if(a == "--write") o.write = value();
+    else if(a == "--threads") o.threads = std::atoi(value().c_str());
+    else if(a == "--no-scape") o.scape = false;
+    else if(a == "--no-faust") o.faust = false;
+    else if(a == "--help" || a == "-h")
+    {
+      std::cout << "usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--write DIR] "
+                   "[--threads T] [--no-scape] [--no-faust]\n";
+      return 0;
+    }
+    else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }
+    else o.data = a;
+  }
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::global_control> control;
+  if(o.threads > 0)
+    control = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
+#endif
+  std::cout << "symmetric map benchmark: data " << o.data << ", " << o.samples
+            << " samples per shape, package defaults otherwise; e = geodesic error / sqrt(area), CR = % e <= "
+            << std::setprecision(4) << kim_threshold << " (unmapped = failure), axis = distance from the "
+            << "ground-truth axis points to the top curve / sqrt(area); times in seconds (wall clock)\n";
+  if(!fs::is_directory(o.data))
+  {
+    std::cout << "data directory " << o.data << " not found: nothing to do\n";
+    return 0;
+  }
+  if(o.faust) run_faust(o);
+  if(o.scape) run_scape(o);
+  return 0;
+}

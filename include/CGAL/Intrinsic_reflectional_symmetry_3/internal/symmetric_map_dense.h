@@ -1,0 +1,156 @@
+// Copyright (c) 2026 The Intrinsic_reflectional_symmetry_3 project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Author(s)     : The Intrinsic_reflectional_symmetry_3 developers
+
+#ifndef CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_INTERNAL_SYMMETRIC_MAP_DENSE_H
+#define CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_INTERNAL_SYMMETRIC_MAP_DENSE_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_mesh.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_mirror.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_extraction.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_regions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+#include <vector>
+
+// The symmetric regions of a set of final IRSA curves and the dense mirror
+// map of each region (paper Sec. 3.4 and 4.2).
+
+namespace CGAL {
+namespace Intrinsic_reflectional_symmetry_3 {
+namespace internal {
+
+/// Mean geodesic distance from a sample to its nearest other sample (the
+/// voting's `mean_sample_spacing`), from the sample rows of `D`.
+inline double mean_sample_spacing(const Geodesic_distance_matrix& D)
+{
+  const std::size_t n = D.number_of_sources();
+  double sum = 0.;
+  std::size_t count = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    float nearest = std::numeric_limits<float>::infinity();
+    for(std::size_t j = 0; j < n; ++j)
+      if(j != i) nearest = (std::min)(nearest, D(i, D.sources()[j]));
+    if(std::isfinite(nearest)) { sum += nearest; ++count; }
+  }
+  return count > 0 ? sum / double(count) : 0.;
+}
+
+struct Region_settings
+{
+  std::size_t number_of_landmarks = 32;
+  Symmetry_tolerance symmetry;
+  double ignition = 0.;
+};
+
+/// Vertex labels of the grass-fire regions of the final curves: the growth
+/// of the refinement, each curve with its final support, and its support
+/// mask computed with landmarks from its final eligible pairs.
+template <class ConcurrencyTag>
+Region_growing_result curve_regions(const Curves_mesh& m, const Geodesic_distance_matrix& D,
+                                    const std::vector<const Irsa_curve*>& curves, const Region_settings& st)
+{
+  std::vector<Region_seed_curve> seeds(curves.size());
+  const std::vector<unsigned char> everywhere(D.number_of_vertices(), 1);
+  for(std::size_t c = 0; c < curves.size(); ++c)
+  {
+    const Irsa_curve& k = *curves[c];
+    for(std::size_t i = 0; i < k.polylines.size(); ++i)
+    {
+      seeds[c].vertices.insert(seeds[c].vertices.end(), k.polylines[i].begin(), k.polylines[i].end());
+      seeds[c].support.insert(seeds[c].support.end(), k.support[i].begin(), k.support[i].end());
+    }
+    const auto landmarks = curve_landmarks<ConcurrencyTag>(D, k.a, k.b, k.eligible_pairs, everywhere,
+                                                           st.number_of_landmarks, st.symmetry);
+    seeds[c].mask = symmetry_support_mask<ConcurrencyTag>(D, seeds[c].vertices, landmarks, st.symmetry);
+  }
+  return grow_regions(m, seeds, st.ignition);
+}
+
+/// Face labels from vertex labels: the label shared by at least two of the
+/// face's vertices; if the three labels differ, the label of the vertex
+/// reached first; -1 if at least two vertices are unlabelled.
+inline std::vector<int> face_labels(const Curves_mesh& m, const Region_growing_result& rg)
+{
+  std::vector<int> out(m.faces.size(), -1);
+  for(std::size_t f = 0; f < m.faces.size(); ++f)
+  {
+    const auto& v = m.faces[f];
+    const int l0 = rg.label[v[0]], l1 = rg.label[v[1]], l2 = rg.label[v[2]];
+    if(l0 >= 0 && (l0 == l1 || l0 == l2)) out[f] = l0;
+    else if(l1 >= 0 && l1 == l2) out[f] = l1;
+    else if(int(l0 >= 0) + int(l1 >= 0) + int(l2 >= 0) == 3)
+    {
+      std::size_t first = 0;
+      for(std::size_t k = 1; k < 3; ++k)
+        if(rg.time[v[k]] < rg.time[v[first]]) first = k;
+      out[f] = rg.label[v[first]];
+    }
+  }
+  return out;
+}
+
+/// Dense mirror map of one region: the best partner (curves_mirror.h) of
+/// every vertex of the region among the vertices of the region, made an
+/// involution greedily: the pairs (x, best(x)) in increasing order of E are
+/// matched when both ends are free (E is symmetric); a vertex left unmatched
+/// keeps its best partner.
+template <class ConcurrencyTag>
+void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, const Irsa_curve& curve,
+                      const std::vector<int>& label, int region, const Region_settings& st,
+                      std::vector<std::ptrdiff_t>& partner)
+{
+  std::vector<std::size_t> verts;
+  for(std::size_t v = 0; v < m.number_of_vertices; ++v)
+    if(label[v] == region) verts.push_back(v);
+  if(verts.empty()) return;
+  std::vector<unsigned char> in_region(m.number_of_vertices, 0);
+  for(std::size_t v : verts) in_region[v] = 1;
+  const Mirror_matcher mm(D, curve_landmarks<ConcurrencyTag>(D, curve.a, curve.b, curve.eligible_pairs, in_region,
+                                                             st.number_of_landmarks, st.symmetry));
+  std::vector<std::size_t> best;
+  std::vector<double> residual;
+  mm.template best_partners<ConcurrencyTag>(verts, verts, best, residual);
+
+  // slot of each vertex in `verts`
+  std::vector<std::size_t> slot(m.number_of_vertices, Mirror_matcher::none);
+  for(std::size_t i = 0; i < verts.size(); ++i) slot[verts[i]] = i;
+  std::vector<std::size_t> by_cost;
+  for(std::size_t i = 0; i < verts.size(); ++i)
+    if(best[i] != Mirror_matcher::none) by_cost.push_back(i);
+  std::sort(by_cost.begin(), by_cost.end(), [&](std::size_t i, std::size_t j) {
+    return residual[i] < residual[j] || (residual[i] == residual[j] && i < j);
+  });
+  std::vector<std::size_t> match(verts.size(), Mirror_matcher::none);
+  for(std::size_t i : by_cost)
+  {
+    const std::size_t j = slot[best[i]];
+    if(match[i] != Mirror_matcher::none || match[j] != Mirror_matcher::none) continue;
+    match[i] = j;
+    match[j] = i;
+  }
+  for(std::size_t i = 0; i < verts.size(); ++i)
+  {
+    if(match[i] != Mirror_matcher::none)
+      partner[verts[i]] = std::ptrdiff_t(verts[match[i]]);
+    else
+      partner[verts[i]] = best[i] == Mirror_matcher::none ? -1 : std::ptrdiff_t(best[i]);
+  }
+}
+
+} // namespace internal
+} // namespace Intrinsic_reflectional_symmetry_3
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_INTERNAL_SYMMETRIC_MAP_DENSE_H

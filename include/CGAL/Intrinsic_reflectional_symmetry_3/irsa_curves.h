@@ -1,0 +1,393 @@
+// Copyright (c) 2026 The Intrinsic_reflectional_symmetry_3 project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Author(s)     : The Intrinsic_reflectional_symmetry_3 developers
+
+#ifndef CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_IRSA_CURVES_H
+#define CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_IRSA_CURVES_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Intrinsic_reflectional_symmetry_3/errors.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/parameters.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_extraction.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_mesh.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+/// \file irsa_curves.h
+/// IRSA curve extraction (paper Sec. 3.4): from the IRSA transform `tau` and
+/// the voting record of `compute_irsa_transform()` to a few explicit
+/// intrinsic reflectional symmetry axes, each with its local symmetry support
+/// and the sample pairs that support it. `symmetric_map.h` turns them into
+/// symmetric regions and point-to-point mirror maps.
+
+namespace CGAL {
+namespace Intrinsic_reflectional_symmetry_3 {
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// An intrinsic reflectional symmetry axis (IRSA) curve, as returned by
+/// `extract_irsa_curves()`: ordered polylines of mesh vertices (vertex
+/// indices), with the refined local symmetry support `mu` at each vertex.
+struct Irsa_curve
+{
+  /// the voting pair whose boundary beta(a, b) the curve comes from (index
+  /// into `Irsa_voting_result::voting_pairs`), and its two samples (rows of the distance matrix)
+  std::size_t voting_pair = 0, a = 0, b = 0;
+  /// nu = int_beta tau * mu at the time the boundary was selected (tau already
+  /// suppressed near the previously selected curves), and the length of beta,
+  /// in the mesh's length unit
+  double nu = 0., boundary_length = 0.;
+  /// the curve: ordered vertex indices along each polyline (a pruned curve
+  /// may be open and in several pieces); consecutive vertices are adjacent in
+  /// the mesh or share a face
+  std::vector<std::vector<std::size_t>> polylines;
+  /// whether each polyline is a closed loop
+  std::vector<bool> closed;
+  /// the refined support mu (paper Alg. 2) at each polyline vertex, same layout as `polylines`
+  std::vector<std::vector<double>> support;
+  /// the sample pairs (p on a's side, q on b's side) that voted the refined
+  /// support: the voting pair's eligible pairs whose two samples lie in the
+  /// curve's region at the end of the refinement
+  std::vector<std::pair<std::size_t, std::size_t>> eligible_pairs;
+  /// refinement iterations run, and whether the support was stable at the end
+  std::size_t number_of_iterations = 0;
+  bool converged = false;
+
+  /// all vertices of the curve, sorted, without duplicates
+  std::vector<std::size_t> vertices() const
+  {
+    std::vector<std::size_t> v;
+    for(const auto& pl : polylines) v.insert(v.end(), pl.begin(), pl.end());
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+  }
+  /// the largest support along the curve
+  double maximum_support() const
+  {
+    double m = 0.;
+    for(const auto& s : support) for(double x : s) m = (std::max)(m, x);
+    return m;
+  }
+};
+
+namespace internal {
+
+constexpr double default_stopping_ratio = 0.8;
+constexpr std::size_t default_maximum_number_of_curves = 10;
+constexpr std::size_t default_number_of_refinement_iterations = 10;
+constexpr double default_pruning_threshold = 0.25;
+constexpr double default_vicinity_radius = 3.0;
+constexpr double default_symmetry_tolerance = 1.0;
+constexpr std::size_t default_number_of_landmarks = 64;
+
+/// The settings shared by curve extraction, regions and the symmetric map:
+/// the reflection test of a vertex (landmarks, candidate band, tolerance)
+/// and the growth delay. `unit` is the mean sample spacing, `floor` the
+/// absolute floor of the distance tolerance.
+template <class NamedParameters>
+void symmetry_settings(const NamedParameters& np, double unit, double floor, std::size_t& number_of_landmarks,
+                       Symmetry_tolerance& tol, double& ignition)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace inp = Intrinsic_reflectional_symmetry_3::internal_np;
+  const double landmarks = double(choose_parameter(get_parameter(np, inp::number_of_landmarks),
+                                                   default_number_of_landmarks));
+  const double scale = choose_parameter(get_parameter(np, inp::symmetry_tolerance), default_symmetry_tolerance);
+  const double eps = choose_parameter(get_parameter(np, inp::distance_threshold), default_distance_threshold);
+  check_voting_parameter(landmarks >= 1., "number_of_landmarks must be >= 1");
+  check_voting_parameter(std::isfinite(scale) && scale >= 0., "symmetry_tolerance must be finite and >= 0");
+  check_voting_parameter(std::isfinite(eps) && eps >= 0. && eps < 1., "distance_threshold must be in [0, 1)");
+  number_of_landmarks = std::size_t(landmarks);
+  tol.floor = floor;
+  tol.eps = eps;
+  tol.scale = scale;
+  ignition = unit;
+}
+
+template <class NamedParameters>
+Curve_settings curve_settings(const Irsa_voting_result& vr, const Curves_mesh& m, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace inp = Intrinsic_reflectional_symmetry_3::internal_np;
+  Curve_settings st;
+  st.stopping_ratio = choose_parameter(get_parameter(np, inp::stopping_ratio), default_stopping_ratio);
+  const double max_curves = double(choose_parameter(get_parameter(np, inp::maximum_number_of_curves),
+                                                    default_maximum_number_of_curves));
+  const double iterations = double(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                                    default_number_of_refinement_iterations));
+  st.pruning_threshold = choose_parameter(get_parameter(np, inp::pruning_threshold), default_pruning_threshold);
+  st.close_curves = choose_parameter(get_parameter(np, inp::close_curves), false);
+  const double vicinity = choose_parameter(get_parameter(np, inp::vicinity_radius), default_vicinity_radius);
+  const double eps = choose_parameter(get_parameter(np, inp::distance_threshold), default_distance_threshold);
+
+  check_voting_parameter(std::isfinite(st.stopping_ratio) && st.stopping_ratio >= 0.,
+                         "stopping_ratio must be finite and >= 0");
+  check_voting_parameter(max_curves >= 1., "maximum_number_of_curves must be >= 1");
+  check_voting_parameter(iterations >= 0., "number_of_iterations must be >= 0");
+  check_voting_parameter(st.pruning_threshold >= 0. && st.pruning_threshold <= 1.,
+                         "pruning_threshold must be in [0, 1]");
+  check_voting_parameter(std::isfinite(vicinity) && vicinity >= 0., "vicinity_radius must be finite and >= 0");
+  check_voting_parameter(std::isfinite(eps) && eps >= 0. && eps < 1., "distance_threshold must be in [0, 1)");
+  st.maximum_number_of_curves = std::size_t(max_curves);
+  st.number_of_iterations = std::size_t(iterations);
+  // lengths in units of the voting's mean sample spacing (the mean edge
+  // length if the spacing is unknown)
+  const double unit = vr.mean_sample_spacing > 0. ? vr.mean_sample_spacing : m.mean_edge_length;
+  st.vicinity = vicinity * unit;
+  st.tolerance.set(eps, vr.distance_tolerance_floor);
+  st.inv_sigma2 = vr.sigma > 0. ? 1. / (vr.sigma * vr.sigma) : 0.;
+  symmetry_settings(np, unit, vr.distance_tolerance_floor, st.number_of_landmarks, st.symmetry, st.ignition);
+  return st;
+}
+
+inline void check_voting_result(const Irsa_voting_result& vr, const Geodesic_distance_matrix& D, std::size_t nv)
+{
+  if(D.number_of_vertices() != nv)
+    throw Input_error(Input_problem::invalid_parameter,
+                      "the distance matrix has " + std::to_string(D.number_of_vertices()) +
+                      " columns but the mesh has " + std::to_string(nv) + " vertices");
+  const std::size_t ns = D.number_of_sources();
+  for(std::size_t k = 0; k < vr.voting_pairs.size(); ++k)
+  {
+    const Irsa_voting_pair& p = vr.voting_pairs[k];
+    bool ok = p.a < ns && p.b < ns && p.support.size() == p.boundary.size();
+    for(std::size_t v : p.boundary) ok = ok && v < nv;
+    for(const auto& e : p.eligible_pairs) ok = ok && e.first < ns && e.second < ns;
+    if(!ok)
+      throw Input_error(Input_problem::invalid_parameter,
+                        "voting pair " + std::to_string(k) + " does not match the distance matrix and the mesh", k);
+  }
+}
+
+inline Irsa_curve to_irsa_curve(const Working_curve& w, const Irsa_voting_result& vr)
+{
+  Irsa_curve c;
+  c.voting_pair = w.pair;
+  c.a = vr.voting_pairs[w.pair].a;
+  c.b = vr.voting_pairs[w.pair].b;
+  c.nu = w.nu;
+  c.boundary_length = w.length;
+  for(std::size_t i = 0; i < w.polylines.size(); ++i)
+  {
+    c.polylines.push_back(w.polylines[i].vertices);
+    c.closed.push_back(w.polylines[i].closed);
+    c.support.push_back(w.mu[i]);
+  }
+  c.eligible_pairs = w.pairs;
+  c.number_of_iterations = w.iterations;
+  c.converged = w.converged;
+  return c;
+}
+
+} // namespace internal
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// Extracts the intrinsic reflectional symmetry axis (IRSA) curves of a mesh
+/// from its IRSA transform (paper Sec. 3.4).
+///
+/// **1. Initial curves.** Every voted boundary beta(a, b) is ranked by the
+/// line integral nu(a, b) = int_beta tau * mu. The integral is taken along
+/// the zero level set of d(a,.) - d(b,.), linear in each face: that level set
+/// is a set of polylines through the faces where the sign changes, each
+/// crossing edge carrying one vertex of beta (the voting's rule), so the
+/// polylines order beta's vertices along the curve; each segment's length is
+/// shared half-and-half by the beta vertices of its two crossing edges
+/// (trapezoidal rule). The best boundary is taken; then tau is set to zero in
+/// its *vicinity*, the vertices within `vicinity_radius` (edge-path distance)
+/// of its vertices, so that boundaries voted for the same axis by neighbouring
+/// pairs do not come back; and the ranking is repeated. The stopping rule is
+/// the paper's, on the *average* nu of the selected boundaries, read as
+/// nu / length(beta) (the mean of tau * mu along the boundary, so that long
+/// boundaries do not win by length alone): with drops
+/// Delta_i = avg_i - avg_{i+1}, the selection stops at the first positive drop
+/// Delta_i, i >= 2, larger than `stopping_ratio` times the previous drop or
+/// larger than the sum of the previous two drops, and keeps boundaries 1..i.
+/// It also stops when no boundary has a positive nu left, and at
+/// `maximum_number_of_curves`. The first drop has no previous drop, so the
+/// rule keeps at least two boundaries when two exist; step 2 removes the
+/// ones that are not the axis of another part.
+///
+/// **2. Where each reflection holds; dominated curves.** Each curve induces a
+/// reflection, represented by landmark pairs of samples: its voting pair
+/// (a, b) and its eligible pairs (up to `number_of_landmarks`, spread by
+/// farthest-point subsampling, and spread further by matching samples, see
+/// below). The mirror partner of a vertex x is the vertex y minimising
+/// `E(x, y) = sum_k (d(x,p_k) - d(y,q_k))^2 + (d(x,q_k) - d(y,p_k))^2`; the
+/// reflection *holds* at x when the residual sqrt(E / 2K) of its partner is
+/// at most `symmetry_tolerance` times the voting's distance tolerance
+/// (`distance_tolerance_floor` + `distance_threshold` times the mean distance
+/// from x to the landmarks). The landmarks are then spread: the samples are
+/// matched among themselves, and mutual matches within the tolerance become
+/// landmarks too (3 rounds; the landmark set under which the reflection holds
+/// at the most samples is kept, and voted pairs that disagree with it are
+/// dropped). A curve whose reflection holds mostly (at more than half of the
+/// vertices where it holds) where a better ranked curve's reflection holds
+/// too is another
+/// symmetry of the same part (e.g. the front-back "symmetry" of a human body,
+/// or the other mirror planes of an ellipsoid), not the axis of another part:
+/// the PIRS regions partition the shape, so it is removed.
+///
+/// **3. Iterative refinement.** All curves grow regions at once (grass fire
+/// along the mesh edges from the whole curve, so fronts move orthogonally to
+/// it, at the speed mu(seed) / max mu over all curves, a seed igniting after
+/// one mean sample spacing / speed; a vertex belongs to the first front that
+/// reaches it, and a front only enters the vertices where its curve's
+/// reflection holds). Each curve's mu is then re-voted (paper Alg. 2, same
+/// tolerance and Gaussian as the voting) by the eligible pairs of its voting
+/// pair whose two samples lie in its region. This repeats until no curve's set
+/// of voters changes, so that mu is exactly stable, or `number_of_iterations`
+/// times. Curves left without support are dropped.
+///
+/// **4. Pruning.** mu is scaled linearly to [0, 1] along each curve by
+/// dividing by its maximum (an affine min-max scaling would always cut the
+/// least supported vertex, even of an evenly supported curve); runs of
+/// vertices below `pruning_threshold` are cut, so curves may become open and
+/// fall into pieces. With `close_curves`, each gap between consecutive pieces
+/// is bridged by the shortest edge path between the piece ends if the mean
+/// scaled support along it (voted by the curve's pairs) reaches the threshold.
+///
+/// The result depends only on the inputs, not on `ConcurrencyTag` or the
+/// number of threads.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
+///         (the default when TBB is linked)
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+/// \tparam VertexTauMap a model of `ReadablePropertyMap` with the vertex
+///         descriptor as key and a floating-point value (tau, as filled by
+///         `compute_irsa_transform()`)
+/// \tparam OutputIterator an output iterator accepting `Irsa_curve`
+///
+/// \param tm the mesh (read only)
+/// \param D the sample-to-vertex distance matrix the voting used
+/// \param voting the result of `compute_irsa_transform()` on `tm` and `D`
+/// \param tau the IRSA transform
+/// \param out receives the curves, best first
+/// \param np optional named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{stopping_ratio}
+///     \cgalParamDescription{r of the stopping rule: a drop of the average nu larger than r times
+///       the previous drop ends the selection}
+///     \cgalParamType{double >= 0}
+///     \cgalParamDefault{0.8 (the paper's value)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_number_of_curves}
+///     \cgalParamDescription{the most boundaries selected in step 1}
+///     \cgalParamType{std::size_t >= 1}
+///     \cgalParamDefault{10}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vicinity_radius}
+///     \cgalParamDescription{tau is set to zero within this distance of a selected boundary, in units of
+///       the mean sample spacing of the voting (`Irsa_voting_result::mean_sample_spacing`)}
+///     \cgalParamType{double >= 0}
+///     \cgalParamDefault{3.0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_landmarks}
+///     \cgalParamDescription{the most landmark pairs representing a curve's reflection}
+///     \cgalParamType{std::size_t >= 1}
+///     \cgalParamDefault{64}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{symmetry_tolerance}
+///     \cgalParamDescription{the reflection holds at a vertex when the residual of its mirror partner is
+///       at most this factor times the voting's distance tolerance; bounds the regions}
+///     \cgalParamType{double >= 0}
+///     \cgalParamDefault{1.0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the most refinement iterations (region growing + re-vote); 0 skips the refinement}
+///     \cgalParamType{std::size_t}
+///     \cgalParamDefault{10}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{pruning_threshold}
+///     \cgalParamDescription{curve vertices whose support, divided by the curve's largest support, is
+///       below this value are cut}
+///     \cgalParamType{double in [0, 1]}
+///     \cgalParamDefault{0.25 (the paper's value)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{close_curves}
+///     \cgalParamDescription{whether to bridge the gaps left by pruning with shortest paths that have
+///       enough support}
+///     \cgalParamType{bool}
+///     \cgalParamDefault{false}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{distance_threshold}
+///     \cgalParamDescription{eps_DIS, the relative distance tolerance of the re-vote's test
+///       d(p,m') ~ d(q,m') and of the reflection test; pass the voting's value (the absolute floor is
+///       taken from `voting`)}
+///     \cgalParamType{double in [0, 1)}
+///     \cgalParamDefault{0.02}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between
+///       0 and `num_vertices(tm) - 1`: the column order of `D`}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index between
+///       0 and `num_faces(tm) - 1`}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the output iterator past the last curve
+/// \throws Input_error (`invalid_parameter`) if `D` or `voting` do not match
+///         `tm`, or a parameter is out of range; (`not_triangle_mesh`) if a
+///         face is not a triangle
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename TriangleMesh, typename VertexTauMap, typename OutputIterator,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
+OutputIterator extract_irsa_curves(const TriangleMesh& tm, const Geodesic_distance_matrix& D,
+                                   const Irsa_voting_result& voting, const VertexTauMap& tau, OutputIterator out,
+                                   const CGAL_NP_CLASS& np = parameters::default_values())
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  const internal::Curves_mesh m = internal::make_curves_mesh(tm, np);
+  internal::check_voting_result(voting, D, m.number_of_vertices);
+  const internal::Curve_settings st = internal::curve_settings(voting, m, np);
+
+  std::vector<double> t(m.number_of_vertices, 0.);
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  for(auto v : vertices(tm))
+  {
+    const double x = double(get(tau, v));
+    t[std::size_t(get(vim, v))] = std::isfinite(x) ? x : 0.;
+  }
+
+  std::vector<internal::Working_curve> curves = internal::select_initial_curves(m, D, voting, t, st);
+  internal::refine_curves<ConcurrencyTag>(m, D, st, curves);
+  internal::prune_curves(m, D, st, curves);
+  for(const auto& c : curves)
+    *out++ = internal::to_irsa_curve(c, voting);
+  return out;
+}
+
+} // namespace Intrinsic_reflectional_symmetry_3
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_IRSA_CURVES_H

@@ -1,0 +1,295 @@
+// Copyright (c) 2026 The Intrinsic_reflectional_symmetry_3 project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Author(s)     : The Intrinsic_reflectional_symmetry_3 developers
+
+#ifndef CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_SYMMETRIC_MAP_H
+#define CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_SYMMETRIC_MAP_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Intrinsic_reflectional_symmetry_3/errors.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/parameters.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_mesh.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/symmetric_map_dense.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+/// \file symmetric_map.h
+/// From IRSA curves (`extract_irsa_curves()`) to partial intrinsic
+/// reflectional symmetries (PIRS): the symmetric region of each curve (a
+/// partition of part of the mesh, paper Sec. 3.4 and 4.1) and, in each
+/// region, the point-to-point reflection it induces (paper Sec. 4.2).
+
+namespace CGAL {
+namespace Intrinsic_reflectional_symmetry_3 {
+
+namespace internal {
+
+template <class TriangleMesh, class CurveRange, class NamedParameters>
+void symmetric_map_setup(const TriangleMesh& tm, const Geodesic_distance_matrix& D, const CurveRange& curves,
+                         const NamedParameters& np, Curves_mesh& m, std::vector<const Irsa_curve*>& cs,
+                         Region_settings& rs)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace inp = Intrinsic_reflectional_symmetry_3::internal_np;
+  m = make_curves_mesh(tm, np);
+  if(D.number_of_vertices() != m.number_of_vertices)
+    throw Input_error(Input_problem::invalid_parameter,
+                      "the distance matrix has " + std::to_string(D.number_of_vertices()) +
+                      " columns but the mesh has " + std::to_string(m.number_of_vertices) + " vertices");
+  cs.clear();
+  const std::size_t ns = D.number_of_sources();
+  for(const Irsa_curve& c : curves)
+  {
+    bool ok = c.a < ns && c.b < ns && c.support.size() == c.polylines.size();
+    for(std::size_t i = 0; ok && i < c.polylines.size(); ++i)
+    {
+      ok = c.support[i].size() == c.polylines[i].size();
+      for(std::size_t v : c.polylines[i]) ok = ok && v < m.number_of_vertices;
+    }
+    for(const auto& pq : c.eligible_pairs) ok = ok && pq.first < ns && pq.second < ns;
+    if(!ok)
+      throw Input_error(Input_problem::invalid_parameter,
+                        "curve " + std::to_string(cs.size()) + " does not match the distance matrix and the mesh",
+                        cs.size());
+    cs.push_back(&c);
+  }
+  const double floor_edges = choose_parameter(get_parameter(np, inp::distance_tolerance_floor),
+                                             default_distance_tolerance_floor);
+  check_voting_parameter(std::isfinite(floor_edges) && floor_edges >= 0.,
+                         "distance_tolerance_floor must be finite and >= 0");
+  const double spacing = mean_sample_spacing(D);
+  const double unit = spacing > 0. ? spacing : m.mean_edge_length;
+  symmetry_settings(np, unit, floor_edges * m.mean_edge_length, rs.number_of_landmarks, rs.symmetry, rs.ignition);
+}
+
+} // namespace internal
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// The symmetric (PIRS) region of each IRSA curve (paper Sec. 3.4 and 4.1):
+/// the region growing of the refinement of `extract_irsa_curves()`, from the
+/// final curves. All curves burn at once along the mesh edges from their
+/// vertices, at a speed proportional to their support (relative to the
+/// largest support of all curves; a seed ignites after one mean sample
+/// spacing / speed); a vertex belongs to the first front that reaches it, and
+/// a front only enters the vertices where its curve's reflection holds: where
+/// the mirror partner of the vertex (see `symmetric_vertex_map()`; landmarks
+/// from the curve's voting pair and eligible pairs, spread over the whole
+/// mesh) has a residual within the tolerance. Regions do not overlap. A face
+/// takes the region of at least two of its vertices (if its three vertices
+/// are in three regions, the region that reached it first); faces of no
+/// region get -1.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
+///         (the default when TBB is linked); the result does not depend on it
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+/// \tparam CurveRange a range of `Irsa_curve` (as from `extract_irsa_curves()`)
+/// \tparam FaceRegionMap a model of `WritablePropertyMap` with the face
+///         descriptor as key and a signed integral value type
+///
+/// \param tm the mesh (read only)
+/// \param D the sample-to-vertex distance matrix of the voting
+/// \param curves the curves; region `i` is the region of the `i`-th curve
+/// \param region receives the region of every face, or -1
+/// \param np optional named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_landmarks}
+///     \cgalParamDescription{the most landmark pairs representing a curve's reflection}
+///     \cgalParamType{std::size_t >= 1}
+///     \cgalParamDefault{64}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{symmetry_tolerance}
+///     \cgalParamDescription{the reflection holds at a vertex when the residual of its mirror partner is
+///       at most this factor times the distance tolerance below}
+///     \cgalParamType{double >= 0}
+///     \cgalParamDefault{1.0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{distance_threshold}
+///     \cgalParamDescription{eps_DIS, relative part of the distance tolerance (pass the voting's value)}
+///     \cgalParamType{double in [0, 1)}
+///     \cgalParamDefault{0.02}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{distance_tolerance_floor}
+///     \cgalParamDescription{absolute part of the distance tolerance, in units of the mean edge length
+///       (pass the voting's value)}
+///     \cgalParamType{double >= 0}
+///     \cgalParamDefault{the voting's default}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{the vertex indices (column order of `D`)}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{the face indices}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the number of faces in a region
+/// \throws Input_error (`invalid_parameter`) if `D` or a curve does not match `tm`
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh,
+          typename CurveRange, typename FaceRegionMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+std::size_t symmetric_regions(const TriangleMesh& tm, const Geodesic_distance_matrix& D, const CurveRange& curves,
+                              FaceRegionMap region, const CGAL_NP_CLASS& np = parameters::default_values())
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  internal::Curves_mesh m;
+  std::vector<const Irsa_curve*> cs;
+  internal::Region_settings rs;
+  internal::symmetric_map_setup(tm, D, curves, np, m, cs, rs);
+  const internal::Region_growing_result rg = internal::curve_regions<ConcurrencyTag>(m, D, cs, rs);
+  const std::vector<int> fl = internal::face_labels(m, rg);
+
+  typedef typename boost::property_traits<FaceRegionMap>::value_type Value;
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  std::size_t count = 0;
+  for(auto f : faces(tm))
+  {
+    const int l = fl[std::size_t(get(fim, f))];
+    put(region, f, static_cast<Value>(l));
+    count += (l >= 0);
+  }
+  return count;
+}
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// The point-to-point reflection induced by each IRSA curve in its symmetric
+/// region (see `symmetric_regions()`): every vertex of a region gets a mirror
+/// partner in the same region; other vertices get -1.
+///
+/// **Method.** A curve's reflection is represented by landmark pairs of
+/// samples (p_k, q_k), K at most `number_of_landmarks`: its voting pair
+/// (a, b) and its eligible pairs, farthest-point subsampled, then spread over
+/// the region by matching the samples of the region among themselves (mutual
+/// matches within the tolerance become landmarks; 3 rounds, keeping the
+/// landmark set under which the reflection holds at the most samples). The
+/// partner of a vertex x is the vertex y of the region minimising
+/// `E(x, y) = sum_k (d(x,p_k) - d(y,q_k))^2 + (d(x,q_k) - d(y,p_k))^2`,
+/// the distances being read in the landmarks' rows of `D`. A reflection swaps
+/// p_k and q_k and preserves distances, so E vanishes at the mirror of x (and
+/// at x itself on the axis); no side test is needed. The minimum is exact:
+/// with s(v) the mean distance from v to the 2K landmark samples,
+/// E(x, y) >= 2K (s(x) - s(y))^2, so candidates are visited by increasing
+/// |s(y) - s(x)| until that bound exceeds the best E. E is symmetric in x and
+/// y; the map is made an involution greedily (the pairs (x, best(x)) in
+/// increasing order of E are matched when both ends are free); a vertex left
+/// unmatched (the two sides need not have the same number of vertices) keeps
+/// its best partner.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
+///         (the default when TBB is linked); the result does not depend on it
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+/// \tparam CurveRange a range of `Irsa_curve`
+/// \tparam VertexPartnerMap a model of `WritablePropertyMap` with the vertex
+///         descriptor as key and a signed integral value type: the vertex
+///         index of the partner, or -1
+///
+/// \param tm the mesh (read only)
+/// \param D the sample-to-vertex distance matrix of the voting
+/// \param curves the curves
+/// \param partner receives the partner of every vertex, or -1
+/// \param np optional named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_landmarks}
+///     \cgalParamDescription{the most landmark pairs representing a curve's reflection}
+///     \cgalParamType{std::size_t >= 1}
+///     \cgalParamDefault{64}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{symmetry_tolerance}
+///     \cgalParamDescription{the reflection holds at a vertex when the residual of its mirror partner is
+///       at most this factor times the distance tolerance below}
+///     \cgalParamType{double >= 0}
+///     \cgalParamDefault{1.0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{distance_threshold}
+///     \cgalParamDescription{eps_DIS, relative part of the distance tolerance (pass the voting's value)}
+///     \cgalParamType{double in [0, 1)}
+///     \cgalParamDefault{0.02}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{distance_tolerance_floor}
+///     \cgalParamDescription{absolute part of the distance tolerance, in units of the mean edge length
+///       (pass the voting's value)}
+///     \cgalParamType{double >= 0}
+///     \cgalParamDefault{the voting's default}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{the vertex indices (column order of `D`, and the values written to `partner`)}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{the face indices}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the number of vertices with a partner
+/// \throws Input_error (`invalid_parameter`) if `D` or a curve does not match
+///         `tm`, or a parameter is out of range
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh, typename CurveRange,
+          typename VertexPartnerMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance_matrix& D, const CurveRange& curves,
+                                 VertexPartnerMap partner, const CGAL_NP_CLASS& np = parameters::default_values())
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  internal::Curves_mesh m;
+  std::vector<const Irsa_curve*> cs;
+  internal::Region_settings rs;
+  internal::symmetric_map_setup(tm, D, curves, np, m, cs, rs);
+  const internal::Region_growing_result rg = internal::curve_regions<ConcurrencyTag>(m, D, cs, rs);
+  std::vector<std::ptrdiff_t> p(m.number_of_vertices, -1);
+  for(std::size_t c = 0; c < cs.size(); ++c)
+    internal::dense_region_map<ConcurrencyTag>(m, D, *cs[c], rg.label, int(c), rs, p);
+
+  typedef typename boost::property_traits<VertexPartnerMap>::value_type Value;
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  std::size_t count = 0;
+  for(auto v : vertices(tm))
+  {
+    const std::ptrdiff_t x = p[std::size_t(get(vim, v))];
+    put(partner, v, static_cast<Value>(x));
+    count += (x >= 0);
+  }
+  return count;
+}
+
+} // namespace Intrinsic_reflectional_symmetry_3
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_SYMMETRIC_MAP_H

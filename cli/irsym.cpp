@@ -7,11 +7,13 @@
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/check_input.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/prepare_mesh.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/symmetric_map.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -68,6 +70,13 @@ outputs in DIR:
   transform.ply        input mesh coloured by the IRSA transform (vertex scalar 'transform')
   sdf.ply              input mesh coloured by the shape diameter function (SDF)
   geodesics.ply        input mesh coloured by the geodesic distance from the first sample
+  curves.txt           the IRSA curves, best first, one per line: input vertex ids in
+                       order (the pieces of a pruned curve one after the other)
+  curves.polylines.txt the same curves in CGAL's polylines format (one line per piece:
+                       number of points, then x y z of each; closed pieces repeat the first)
+  regions.txt          the symmetric region (curve index) of each input face, -1 for none
+  symmetric_map.txt    the mirror partner of each input vertex, -1 for none
+  curves.ply           input mesh coloured by region, curves in black
   *.png                pictures of the PLY files, where f3d and xvfb-run are installed
 
 exit status: 0 success, 1 usage error, 2 bad input (the message names the problem)
@@ -141,6 +150,80 @@ IRS::Generated_shape<Mesh> generate(const std::string& name)
                     "' (sphere, ellipsoid, capsule, torus, snowman, two_snowmen, bent_capsule)");
 }
 
+/// Writes curves, regions and the symmetric map in terms of the input mesh:
+/// working vertices go to their nearest input vertex, input vertices and
+/// faces take the partner / region of their working counterpart.
+template <typename Prepared>
+void write_symmetry_outputs(const Mesh& input, const Prepared& prepared, const std::vector<IRS::Irsa_curve>& curves,
+                            const std::vector<long>& region, const std::vector<long>& partner, const fs::path& out,
+                            irsym::Json& files)
+{
+  std::vector<std::vector<std::vector<std::size_t>>> pieces; // curve -> piece -> input vertex ids
+  for(const IRS::Irsa_curve& c : curves) {
+    pieces.emplace_back();
+    for(const auto& pl : c.polylines) {
+      std::vector<std::size_t> ids;
+      for(std::size_t w : pl) {
+        const std::size_t i = prepared.working_to_input_vertex(w);
+        if(ids.empty() || ids.back() != i) ids.push_back(i);
+      }
+      pieces.back().push_back(std::move(ids));
+    }
+  }
+  {
+    std::ofstream s(out / "curves.txt");
+    for(const auto& c : pieces) {
+      const char* sep = "";
+      for(const auto& pl : c)
+        for(std::size_t i : pl) { s << sep << i; sep = " "; }
+      s << '\n';
+    }
+    std::ofstream p(out / "curves.polylines.txt");
+    p << std::setprecision(17);
+    for(std::size_t k = 0; k < pieces.size(); ++k)
+      for(std::size_t j = 0; j < pieces[k].size(); ++j) {
+        const auto& pl = pieces[k][j];
+        const bool closed = curves[k].closed[j] && pl.size() > 2;
+        p << pl.size() + (closed ? 1 : 0);
+        for(std::size_t t = 0; t < pl.size() + (closed ? 1 : 0); ++t)
+          p << ' ' << input.point(Mesh::Vertex_index(Mesh::size_type(pl[t % pl.size()])));
+        p << '\n';
+      }
+  }
+  const std::vector<long> region_in = IRS::transfer_face_labels_to_input(prepared, region);
+  {
+    std::ofstream s(out / "regions.txt");
+    for(long r : region_in) s << r << '\n';
+    std::ofstream m(out / "symmetric_map.txt");
+    for(std::size_t i = 0; i < prepared.number_of_input_vertices(); ++i) {
+      const long w = partner[prepared.input_to_working_vertex(i)];
+      m << (w < 0 ? -1L : long(prepared.working_to_input_vertex(std::size_t(w)))) << '\n';
+    }
+  }
+  for(const char* f : {"curves.txt", "curves.polylines.txt", "regions.txt", "symmetric_map.txt"})
+    files.push(irsym::Json::object().add("file", f));
+
+  // picture: vertices take the region of an incident face; the curves and
+  // their one-ring in black, so that they show at any resolution
+  std::vector<CGAL::IO::Color> colour(num_vertices(input), irsym::label_colour(-1));
+  for(auto f : faces(input))
+    if(region_in[f.idx()] >= 0)
+      for(auto v : CGAL::vertices_around_face(halfedge(f, input), input))
+        colour[v.idx()] = irsym::label_colour(region_in[f.idx()]);
+  for(const auto& c : pieces)
+    for(const auto& pl : c)
+      for(std::size_t i : pl) {
+        const Mesh::Vertex_index v{Mesh::size_type(i)};
+        colour[i] = CGAL::IO::Color(0, 0, 0);
+        for(auto u : CGAL::vertices_around_target(halfedge(v, input), input)) colour[u.idx()] = CGAL::IO::Color(0, 0, 0);
+      }
+  const std::string ply = (out / "curves.ply").string();
+  if(!irsym::write_coloured_ply(input, colour, ply)) throw std::runtime_error("cannot write " + ply);
+  files.push(irsym::Json::object().add("file", "curves.ply"));
+  if(irsym::render_png(ply, (out / "curves.png").string()))
+    files.push(irsym::Json::object().add("file", "curves.png"));
+}
+
 template <typename Oracle>
 int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, irsym::Json& report)
 {
@@ -193,6 +276,21 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     IRS::parameters::random_seed(opt.seed));
   log.stop();
 
+  log.start("IRSA curves");
+  std::vector<IRS::Irsa_curve> curves;
+  IRS::extract_irsa_curves(work, D, voting,
+                           boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
+                           std::back_inserter(curves));
+  log.stop();
+
+  log.start("symmetric regions and map");
+  std::vector<long> region(num_faces(work), -1), partner(num_vertices(work), -1);
+  const std::size_t region_faces = IRS::symmetric_regions(
+    work, D, curves, boost::make_iterator_property_map(region.begin(), get(boost::face_index, work)));
+  const std::size_t mapped_vertices = IRS::symmetric_vertex_map(
+    work, D, curves, boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, work)));
+  log.stop();
+
   // ---- outputs, on the input mesh ----
   {
     std::ofstream s(out / "samples.txt");
@@ -216,6 +314,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     t << std::setprecision(9);
     for(double x : tau_in) t << x << '\n';
   }
+  write_symmetry_outputs(input, prepared, curves, region, partner, out, files);
   emit(tau_in, "transform");
   emit(sdf_in, "sdf");
   emit(geo_in, "geodesics");
@@ -233,7 +332,16 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
      .add("gaussian_width_sigma", voting.sigma)
      .add("distance_tolerance_floor", voting.distance_tolerance_floor)
      .add("locality_radius", voting.locality_radius)
-     .add("largest_tau", *std::max_element(tau.begin(), tau.end()));
+     .add("largest_tau", *std::max_element(tau.begin(), tau.end()))
+     .add("curves", curves.size())
+     .add("faces_in_regions", region_faces)
+     .add("vertices_with_partner", mapped_vertices);
+  irsym::Json curve_list = irsym::Json::array();
+  for(const IRS::Irsa_curve& c : curves)
+    curve_list.push(irsym::Json::object().add("vertices", c.vertices().size()).add("pieces", c.polylines.size())
+                      .add("nu", c.nu).add("largest_support", c.maximum_support())
+                      .add("refinement_iterations", c.number_of_iterations).add("converged", c.converged));
+  res.add("curve_details", curve_list);
   report.add("results", res);
   report.add("outputs", files);
   return 0;

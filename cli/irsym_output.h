@@ -194,6 +194,44 @@ bool write_scalar_ply(const CGAL::Surface_mesh<Point>& mesh, const std::vector<d
   return bool(out);
 }
 
+/// a palette of well separated colours for labels (regions, segments); -1 is light grey
+inline CGAL::IO::Color label_colour(long label)
+{
+  static const unsigned char c[12][3] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44},  {214, 39, 40},
+                                         {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {188, 189, 34},
+                                         {23, 190, 207}, {174, 199, 232}, {255, 187, 120}, {152, 223, 138}};
+  if(label < 0) return CGAL::IO::Color(200, 200, 200);
+  const auto& k = c[label % 12];
+  return CGAL::IO::Color(k[0], k[1], k[2]);
+}
+
+/// Writes `mesh` to `path` as binary PLY with a colour per vertex (same
+/// reason as `write_scalar_ply()` for not using CGAL::IO::write_PLY).
+template <typename Point>
+bool write_coloured_ply(const CGAL::Surface_mesh<Point>& mesh, const std::vector<CGAL::IO::Color>& colours,
+                        const std::string& path)
+{
+  std::ofstream out(path, std::ios::binary);
+  out << "ply\nformat binary_little_endian 1.0\ncomment irsym\n"
+      << "element vertex " << mesh.number_of_vertices() << "\n"
+      << "property float x\nproperty float y\nproperty float z\n"
+      << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+      << "element face " << mesh.number_of_faces() << "\n"
+      << "property list uchar int vertex_indices\nend_header\n";
+  auto put = [&out](auto x) { out.write(reinterpret_cast<const char*>(&x), sizeof(x)); };
+  for(auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    put(float(CGAL::to_double(p.x()))); put(float(CGAL::to_double(p.y()))); put(float(CGAL::to_double(p.z())));
+    const CGAL::IO::Color& c = colours.at(v.idx());
+    put(c.red()); put(c.green()); put(c.blue());
+  }
+  for(auto f : mesh.faces()) {
+    put(static_cast<unsigned char>(mesh.degree(f)));
+    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) put(static_cast<int>(v.idx()));
+  }
+  return bool(out);
+}
+
 inline bool command_exists(const std::string& name)
 {
   return std::system(("command -v " + name + " > /dev/null 2>&1").c_str()) == 0;

@@ -61,6 +61,8 @@ usage: irsym MESH --out DIR [options]
   --target-vertices N  first remesh or decimate to about N vertices (default: keep the mesh)
   --remesh             reach --target-vertices by isotropic remeshing (default: decimation
                        when reducing, remeshing when refining)
+  --up AXIS            the mesh axis drawn upwards in the pictures: +X, -X, +Y, -Y, +Z
+                       (default) or -Z
   --help               this text
 
 outputs in DIR:
@@ -90,6 +92,7 @@ struct Options
   int threads = 0;
   long long target_vertices = 0;
   bool remesh = false;
+  std::string up = "+Z";
 };
 
 struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
@@ -123,6 +126,11 @@ Options parse_options(int argc, char** argv)
     else if(a == "--threads") o.threads = int(parse_integer(a, value(), 1));
     else if(a == "--target-vertices") o.target_vertices = parse_integer(a, value(), 4);
     else if(a == "--remesh") o.remesh = true;
+    else if(a == "--up") {
+      o.up = value();
+      if(o.up.size() != 2 || (o.up[0] != '+' && o.up[0] != '-') || o.up.find_first_of("XYZ", 1) != 1)
+        throw Usage_error("--up expects +X, -X, +Y, -Y, +Z or -Z, got '" + o.up + "'");
+    }
     else if(a == "--geodesics") {
       o.geodesics = value();
       if(o.geodesics != "heat" && o.geodesics != "exact" && o.geodesics != "dijkstra")
@@ -156,7 +164,7 @@ IRS::Generated_shape<Mesh> generate(const std::string& name)
 template <typename Prepared>
 void write_symmetry_outputs(const Mesh& input, const Prepared& prepared, const std::vector<IRS::Irsa_curve>& curves,
                             const std::vector<long>& region, const std::vector<long>& partner, const fs::path& out,
-                            irsym::Json& files)
+                            const std::string& up, irsym::Json& files)
 {
   std::vector<std::vector<std::vector<std::size_t>>> pieces; // curve -> piece -> input vertex ids
   for(const IRS::Irsa_curve& c : curves) {
@@ -220,7 +228,7 @@ void write_symmetry_outputs(const Mesh& input, const Prepared& prepared, const s
   const std::string ply = (out / "curves.ply").string();
   if(!irsym::write_coloured_ply(input, colour, ply)) throw std::runtime_error("cannot write " + ply);
   files.push(irsym::Json::object().add("file", "curves.ply"));
-  if(irsym::render_png(ply, (out / "curves.png").string()))
+  if(irsym::render_png(ply, (out / "curves.png").string(), up))
     files.push(irsym::Json::object().add("file", "curves.png"));
 }
 
@@ -305,7 +313,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     if(!irsym::write_scalar_ply(input, field, name, ply))
       throw std::runtime_error("cannot write " + ply);
     files.push(irsym::Json::object().add("file", name + ".ply"));
-    if(irsym::render_png(ply, (out / (name + ".png")).string()))
+    if(irsym::render_png(ply, (out / (name + ".png")).string(), opt.up))
       files.push(irsym::Json::object().add("file", name + ".png"));
   };
   const std::vector<double> tau_in = IRS::transfer_vertex_field_to_input(prepared, tau);
@@ -314,7 +322,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     t << std::setprecision(9);
     for(double x : tau_in) t << x << '\n';
   }
-  write_symmetry_outputs(input, prepared, curves, region, partner, out, files);
+  write_symmetry_outputs(input, prepared, curves, region, partner, out, opt.up, files);
   emit(tau_in, "transform");
   emit(sdf_in, "sdf");
   emit(geo_in, "geodesics");
@@ -382,7 +390,7 @@ int main(int argc, char** argv)
     params.add("mesh", opt.mesh_path).add("shape", opt.shape)
           .add("samples", opt.samples ? double(*opt.samples) : std::numeric_limits<double>::quiet_NaN())
           .add("seed", opt.seed).add("geodesics", opt.geodesics).add("threads", threads)
-          .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh);
+          .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh).add("up", opt.up);
     report.add("parameters", params);
 
     int rc = 0;

@@ -238,11 +238,14 @@ inline bool command_exists(const std::string& name)
 }
 
 /// Renders a coloured PLY to PNG with f3d under xvfb-run; false if unavailable.
-inline bool render_png(const std::string& ply, const std::string& png)
+/// `up` is the mesh axis drawn upwards (f3d's --up: +X, -Y, ...); the camera
+/// looks from a three-quarter view so that curves on the mid-plane show.
+inline bool render_png(const std::string& ply, const std::string& png, const std::string& up = "+Z")
 {
   if(!command_exists("f3d") || !command_exists("xvfb-run")) return false;
   const std::string cmd = "xvfb-run -a -s '-screen 0 1280x1024x24' f3d --quiet --no-background=0 "
-                          "--scalars=RGB --comp=-2 --resolution=1200,900 --up=+Z "
+                          "--scalars=RGB --comp=-2 --resolution=1200,900 --up=" + up +
+                          " --camera-azimuth-angle=30 --camera-elevation-angle=15 "
                           "--output='" + png + "' '" + ply + "' > /dev/null 2>&1";
   return std::system(cmd.c_str()) == 0;
 }

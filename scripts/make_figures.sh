@@ -16,4 +16,11 @@ for f in sdf geodesics transform; do
 done
 "$build/cli/irsym" --shape bent_capsule --out "$tmp/bent_capsule" --seed 1
 [ -f "$tmp/bent_capsule/transform.png" ] && cp "$tmp/bent_capsule/transform.png" "$fig/bent_capsule_transform.png"
+# CGAL's camel (libcgal-demo, installed by setup.sh)
+tarball=/usr/share/doc/libcgal-dev/data.tar.gz
+if [ -f "$tarball" ]; then
+  tar -xzf "$tarball" -C "$tmp" data/meshes/camel.off
+  "$build/cli/irsym" "$tmp/data/meshes/camel.off" --samples 1500 --up +Y --out "$tmp/camel"
+  [ -f "$tmp/camel/curves.png" ] && cp "$tmp/camel/curves.png" "$fig/camel_curves.png"
+fi
 ls -l "$fig"

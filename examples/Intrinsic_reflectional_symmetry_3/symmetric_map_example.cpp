@@ -1,0 +1,81 @@
+// The whole pipeline on one mesh: samples, geodesics, signatures, IRSA
+// transform, IRSA curves, symmetric regions and the symmetric vertex map.
+// Prints the curves and, for a few vertices, their mirror partners.
+//
+// usage: symmetric_map_example [mesh.off [number_of_samples]]
+//        (default: a generated bent capsule, whose end-to-end symmetry is intrinsic only)
+
+#include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/check_input.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/symmetric_map.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <iterator>
+#include <utility>
+#include <vector>
+
+namespace IRS = CGAL::Intrinsic_reflectional_symmetry_3;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef Mesh::Vertex_index vertex_descriptor;
+typedef Mesh::Face_index face_descriptor;
+
+int main(int argc, char** argv)
+{
+  Mesh mesh;
+  try {
+    if(argc > 1) IRS::read_mesh(argv[1], mesh); // throws Input_error naming the problem
+    else mesh = IRS::generate_bent_capsule<Mesh>(2000).mesh;
+    IRS::check_input(mesh);
+  } catch(const IRS::Input_error& e) {
+    std::cerr << "bad input: " << e.what() << std::endl;
+    return EXIT_FAILURE;
+  }
+  const std::size_t n = argc > 2 ? std::size_t(std::atoi(argv[2])) : (num_vertices(mesh) + 3) / 4;
+
+  // 1. samples and the sample-to-vertex geodesic distance matrix
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(mesh, IRS::parameters::number_of_samples(n).random_seed(0u));
+  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(mesh);
+  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+
+  // 2. the similarity filter on SDF map signatures
+  const IRS::Sdf_signatures signatures = IRS::compute_sdf_signatures(mesh, D);
+  std::vector<std::pair<std::size_t, std::size_t>> similar;
+  IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
+
+  // 3. the IRSA transform, into a vertex property map
+  auto tau = mesh.add_property_map<vertex_descriptor, double>("v:tau", 0.).first;
+  const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(mesh, D, similar, tau);
+
+  // 4. the curves, their regions and the mirror map
+  std::vector<IRS::Irsa_curve> curves;
+  IRS::extract_irsa_curves(mesh, D, voting, tau, std::back_inserter(curves));
+  auto region = mesh.add_property_map<face_descriptor, int>("f:region", -1).first;
+  auto partner = mesh.add_property_map<vertex_descriptor, long>("v:partner", -1).first;
+  const std::size_t in_regions = IRS::symmetric_regions(mesh, D, curves, region);
+  const std::size_t mapped = IRS::symmetric_vertex_map(mesh, D, curves, partner);
+
+  std::cout << num_vertices(mesh) << " vertices, " << samples.size() << " samples, " << similar.size()
+            << " similar pairs, " << curves.size() << " IRSA curve(s)" << std::endl;
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    std::cout << "  curve " << c << ": " << curves[c].vertices().size() << " vertices in "
+              << curves[c].polylines.size() << " piece(s), nu = " << curves[c].nu << std::endl;
+  std::cout << in_regions << " of " << num_faces(mesh) << " faces in a symmetric region, " << mapped
+            << " vertices with a mirror partner" << std::endl;
+  for(std::size_t i = 0; i < 5 && i < samples.size(); ++i) {
+    const vertex_descriptor v(Mesh::size_type(samples[i]));
+    std::cout << "  vertex " << std::size_t(v) << " <-> " << get(partner, v) << std::endl;
+  }
+  return EXIT_SUCCESS;
+}

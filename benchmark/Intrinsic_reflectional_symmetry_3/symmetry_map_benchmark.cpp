@@ -15,7 +15,7 @@
 // coverage, the distance from the ground-truth axis points to the top curve
 // (over sqrt(area)), and the time per shape (wall clock).
 //
-// usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME]
+// usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--similarity EPS_SIM]
 //                               [--write DIR] [--threads T] [--no-scape] [--no-faust]
 //   DATA_DIR  default ../shared/data (relative to the current directory);
 //             faust_5k/ and kim_bim_benchmark/ inside it, each skipped if absent
@@ -74,6 +74,7 @@ struct Options
 {
   std::string data = "../shared/data";
   std::size_t samples = 1000;
+  double similarity = -1.; // < 0: the package's default
   std::string only, write;
   int threads = 0;
   bool faust = true, scape = true;
@@ -88,7 +89,7 @@ struct Pipeline_result
 };
 
 // the package's pipeline with its defaults; only the number of samples and the seed are set
-Pipeline_result run_pipeline(const Mesh& m, std::size_t number_of_samples)
+Pipeline_result run_pipeline(const Mesh& m, std::size_t number_of_samples, double similarity)
 {
   Pipeline_result r;
   CGAL::Real_timer total, t;
@@ -103,7 +104,9 @@ Pipeline_result run_pipeline(const Mesh& m, std::size_t number_of_samples)
 
   const IRS::Sdf_signatures signatures = IRS::sdf_signatures(IRS::vertex_sdf_values(m), IRS::vertex_areas(m), D);
   std::vector<std::pair<std::size_t, std::size_t>> similar;
-  IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
+  if(similarity < 0.) IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
+  else IRS::similar_sample_pairs(signatures, std::back_inserter(similar),
+                                 IRS::parameters::similarity_threshold(similarity));
   r.similar_pairs = similar.size();
   r.seconds[1] = t.time(); t.reset();
 
@@ -287,7 +290,7 @@ void run_faust(const Options& o)
     for(std::size_t k = 0; k < x.size(); ++k)
       if(x[k] >= 1 && y[k] >= 1 && std::size_t(x[k]) <= num_vertices(m) && std::size_t(y[k]) <= num_vertices(m))
         gt.emplace_back(std::size_t(x[k] - 1), std::size_t(y[k] - 1)); // 1-based
-    const Pipeline_result r = run_pipeline(m, o.samples);
+    const Pipeline_result r = run_pipeline(m, o.samples, o.similarity);
     const Metrics e = evaluate(m, gt, r);
     print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
     write_outputs(o, name, r);
@@ -361,7 +364,7 @@ void run_scape(const Options& o)
       if(to_mended[std::size_t(a)] < 0 || to_mended[std::size_t(b)] < 0) continue;
       gt.emplace_back(std::size_t(to_mended[std::size_t(a)]), std::size_t(to_mended[std::size_t(b)]));
     }
-    const Pipeline_result r = run_pipeline(m, o.samples);
+    const Pipeline_result r = run_pipeline(m, o.samples, o.similarity);
     const Metrics e = evaluate(m, gt, r);
     print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
     if(!o.write.empty())
@@ -392,6 +395,7 @@ int main(int argc, char** argv)
     };
     if(a == "--samples") o.samples = std::size_t(std::max(1L, std::atol(value().c_str())));
     else if(a == "--only") o.only = value();
+    else if(a == "--similarity") o.similarity = std::atof(value().c_str());
     else if(a == "--write") o.write = value();
     else if(a == "--threads") o.threads = std::atoi(value().c_str());
     else if(a == "--no-scape") o.scape = false;
@@ -399,7 +403,7 @@ int main(int argc, char** argv)
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--write DIR] "
-                   "[--threads T] [--no-scape] [--no-faust]\n";
+                   "[--threads T] [--similarity EPS_SIM] [--no-scape] [--no-faust]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }

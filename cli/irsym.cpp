@@ -11,6 +11,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/prepare_mesh.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/segmentation.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/symmetric_map.h>
@@ -79,6 +80,8 @@ outputs in DIR:
   regions.txt          the symmetric region (curve index) of each input face, -1 for none
   symmetric_map.txt    the mirror partner of each input vertex, -1 for none
   curves.ply           input mesh coloured by region, curves in black
+  segmentation.txt     symmetry-aware segmentation: one segment id per input face
+  segmentation.ply     input mesh, faces coloured by segment
   *.png                pictures of the PLY files, where f3d and xvfb-run are installed
 
 exit status: 0 success, 1 usage error, 2 bad input (the message names the problem)
@@ -299,6 +302,12 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     work, D, curves, boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, work)));
   log.stop();
 
+  log.start("segmentation");
+  std::vector<long> segment(num_faces(work), -1);
+  const std::size_t segments = IRS::symmetry_aware_segmentation(
+    work, D, curves, boost::make_iterator_property_map(segment.begin(), get(boost::face_index, work)));
+  log.stop();
+
   // ---- outputs, on the input mesh ----
   {
     std::ofstream s(out / "samples.txt");
@@ -323,6 +332,20 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     for(double x : tau_in) t << x << '\n';
   }
   write_symmetry_outputs(input, prepared, curves, region, partner, out, opt.up, files);
+  {
+    const std::vector<long> segment_in = IRS::transfer_face_labels_to_input(prepared, segment);
+    std::ofstream t(out / "segmentation.txt");
+    std::vector<CGAL::IO::Color> colour(segment_in.size());
+    for(std::size_t f = 0; f < segment_in.size(); ++f) {
+      t << segment_in[f] << '\n';
+      colour[f] = irsym::label_colour(segment_in[f]);
+    }
+    const std::string ply = (out / "segmentation.ply").string();
+    if(!irsym::write_face_coloured_ply(input, colour, ply)) throw std::runtime_error("cannot write " + ply);
+    files.push(irsym::Json::object().add("file", "segmentation.txt")).push(irsym::Json::object().add("file", "segmentation.ply"));
+    if(irsym::render_png(ply, (out / "segmentation.png").string(), opt.up, true))
+      files.push(irsym::Json::object().add("file", "segmentation.png"));
+  }
   emit(tau_in, "transform");
   emit(sdf_in, "sdf");
   emit(geo_in, "geodesics");
@@ -343,7 +366,8 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
      .add("largest_tau", *std::max_element(tau.begin(), tau.end()))
      .add("curves", curves.size())
      .add("faces_in_regions", region_faces)
-     .add("vertices_with_partner", mapped_vertices);
+     .add("vertices_with_partner", mapped_vertices)
+     .add("segments", segments);
   irsym::Json curve_list = irsym::Json::array();
   for(const IRS::Irsa_curve& c : curves)
     curve_list.push(irsym::Json::object().add("vertices", c.vertices().size()).add("pieces", c.polylines.size())

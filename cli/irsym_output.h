@@ -232,6 +232,32 @@ bool write_coloured_ply(const CGAL::Surface_mesh<Point>& mesh, const std::vector
   return bool(out);
 }
 
+/// Writes `mesh` to `path` as binary PLY with a colour per face (segments).
+template <typename Point>
+bool write_face_coloured_ply(const CGAL::Surface_mesh<Point>& mesh, const std::vector<CGAL::IO::Color>& colours,
+                             const std::string& path)
+{
+  std::ofstream out(path, std::ios::binary);
+  out << "ply\nformat binary_little_endian 1.0\ncomment irsym\n"
+      << "element vertex " << mesh.number_of_vertices() << "\n"
+      << "property float x\nproperty float y\nproperty float z\n"
+      << "element face " << mesh.number_of_faces() << "\n"
+      << "property list uchar int vertex_indices\n"
+      << "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
+  auto put = [&out](auto x) { out.write(reinterpret_cast<const char*>(&x), sizeof(x)); };
+  for(auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    put(float(CGAL::to_double(p.x()))); put(float(CGAL::to_double(p.y()))); put(float(CGAL::to_double(p.z())));
+  }
+  for(auto f : mesh.faces()) {
+    put(static_cast<unsigned char>(mesh.degree(f)));
+    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) put(static_cast<int>(v.idx()));
+    const CGAL::IO::Color& c = colours.at(f.idx());
+    put(c.red()); put(c.green()); put(c.blue());
+  }
+  return bool(out);
+}
+
 inline bool command_exists(const std::string& name)
 {
   return std::system(("command -v " + name + " > /dev/null 2>&1").c_str()) == 0;
@@ -240,11 +266,13 @@ inline bool command_exists(const std::string& name)
 /// Renders a coloured PLY to PNG with f3d under xvfb-run; false if unavailable.
 /// `up` is the mesh axis drawn upwards (f3d's --up: +X, -Y, ...); the camera
 /// looks from a three-quarter view so that curves on the mid-plane show.
-inline bool render_png(const std::string& ply, const std::string& png, const std::string& up = "+Z")
+inline bool render_png(const std::string& ply, const std::string& png, const std::string& up = "+Z",
+                       bool face_colours = false)
 {
   if(!command_exists("f3d") || !command_exists("xvfb-run")) return false;
   const std::string cmd = "xvfb-run -a -s '-screen 0 1280x1024x24' f3d --quiet --no-background=0 "
-                          "--scalars=RGB --comp=-2 --resolution=1200,900 --up=" + up +
+                          "--scalars=RGB --comp=-2 " + std::string(face_colours ? "--cells " : "") +
+                          "--resolution=1200,900 --up=" + up +
                           " --camera-azimuth-angle=30 --camera-elevation-angle=15 "
                           "--output='" + png + "' '" + ply + "' > /dev/null 2>&1";
   return std::system(cmd.c_str()) == 0;

@@ -1,7 +1,9 @@
 // IRSA transform benchmark: time per stage and peak memory of the whole
 // transform (heat-method geodesics, SDF signatures, voting) for growing
 // sample counts on CGAL's camel.off and man.off; fast voting vs the literal
-// reference of Alg. 1-2 side by side on the same input; and, with
+// reference of Alg. 1-2 side by side on the same input, for several
+// similarity thresholds; with --robustness, the relative L2 change of tau
+// under vertex noise and small holes (paper Fig. 10-11); and, with
 // --floor-study, the measurements behind the default of
 // `distance_tolerance_floor`. Prints tables; asserts nothing.
 //
@@ -12,8 +14,12 @@
 //   --meshes x,y,...      mesh file names (default camel.off,man.off)
 //   --threads N           threads of the parallel stages (default: all)
 //   --reference-samples N samples of the fast-vs-reference run (default 300; 0: skip)
+//   --reference-eps a,b   similarity thresholds of that run (default 0.025,0.05,0.1,0.2)
+//   --robustness          also run the noise and holes study (camel, and FAUST with --faust)
+//   --robustness-samples N  samples of that study (default 1000)
 //   --floor-study         also run the distance-floor measurements
-//   --faust DIR           with --floor-study: FAUST folder with X.off and corres/X.{vts,sym.vts}
+//   --faust DIR           FAUST folder with X.off and corres/X.{vts,sym.vts}
+//                         (for --floor-study and --robustness)
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
@@ -25,6 +31,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -156,7 +164,10 @@ void scaling(const std::string& path, const std::vector<std::size_t>& sample_cou
 
 // ---------------------------------------------------------------- fast vs reference
 
-void versus_reference(const std::string& path, std::size_t n, double similarity_threshold)
+// One row per similarity threshold. The set-up shared by both implementations
+// (input checks, vertex adjacency, sample matrix, sigma: make_voting_setup())
+// is timed apart; "voting" is what follows it, "end to end" includes it.
+void versus_reference(const std::string& path, std::size_t n, const std::vector<double>& thresholds)
 {
   Mesh m;
   if(!CGAL::IO::read_polygon_mesh(path, m) || is_empty(m)) return;
@@ -164,46 +175,251 @@ void versus_reference(const std::string& path, std::size_t n, double similarity_
   const std::vector<std::size_t> samples =
     IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
   const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
-  const Pairs pairs = similar_pairs(m, D, IRS::vertex_sdf_values(m), IRS::vertex_areas(m), similarity_threshold);
+  const std::vector<double> sdf = IRS::vertex_sdf_values(m), areas = IRS::vertex_areas(m);
+  std::cout << "\n## Fast voting vs the literal reference (Alg. 1-2): " << path << ", " << n
+            << " samples, default voting parameters\n\n"
+            << "| eps_SIM | similar pairs | voted | shared set-up s | reference voting s | fast voting, 1 thread s |"
+               " fast voting, parallel s | speed-up voting (1 thread) | speed-up voting (parallel) |"
+               " speed-up end to end (1 thread) | same voted and eligible pairs | tau: max rel. difference |"
+               " bit-different tau |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for(double eps_sim : thresholds)
+  {
+    const Pairs pairs = similar_pairs(m, D, sdf, areas, eps_sim);
+    CGAL::Real_timer t;
+    t.start();
+    const IRS::internal::Voting_setup setup =
+      IRS::internal::make_voting_setup(m, D, pairs, IRS::parameters::default_values());
+    const double t_setup = t.time();
+    std::vector<double> tau_ref, tau_seq, tau_par;
+    t.reset();
+    const IRS::Irsa_voting_result ref = IRS::internal::Reference_voting(setup).run(tau_ref);
+    const double t_ref = t.time();
+    t.reset();
+    const IRS::Irsa_voting_result seq = IRS::internal::run_fast_voting<CGAL::Sequential_tag>(setup, tau_seq, 0);
+    const double t_seq = t.time();
+    t.reset();
+    const IRS::Irsa_voting_result par =
+      IRS::internal::run_fast_voting<CGAL::Parallel_if_available_tag>(setup, tau_par, 0);
+    const double t_par = t.time();
+    double max_rel = 0.;
+    std::size_t bit_different = 0;
+    for(std::size_t v = 0; v < tau_ref.size(); ++v)
+    {
+      const double a = tau_ref[v], b = tau_par[v], c = tau_seq[v];
+      if(a != b || a != c) ++bit_different;
+      const double scale = (std::max)(std::abs(a), 1e-300);
+      max_rel = (std::max)({max_rel, std::abs(a - b) / scale, std::abs(a - c) / scale});
+    }
+    bool same_pairs = ref.voting_pairs.size() == par.voting_pairs.size() &&
+                      ref.voting_pairs.size() == seq.voting_pairs.size();
+    for(std::size_t k = 0; same_pairs && k < ref.voting_pairs.size(); ++k)
+      same_pairs = ref.voting_pairs[k].eligible_pairs == par.voting_pairs[k].eligible_pairs &&
+                   ref.voting_pairs[k].boundary == par.voting_pairs[k].boundary &&
+                   ref.voting_pairs[k].eligible_pairs == seq.voting_pairs[k].eligible_pairs;
+    std::cout << "| " << eps_sim << " | " << pairs.size() << " | " << ref.voting_pairs.size() << " | "
+              << std::fixed << std::setprecision(4) << t_setup << " | " << t_ref << " | " << t_seq << " | "
+              << t_par << " | " << std::setprecision(0) << t_ref / t_seq << "x | " << t_ref / t_par << "x | "
+              << (t_setup + t_ref) / (t_setup + t_seq) << "x | " << (same_pairs ? "yes" : "NO") << " | "
+              << std::scientific << std::setprecision(1) << max_rel << std::defaultfloat << " | "
+              << bit_different << " |" << std::endl;
+  }
+}
 
+// ---------------------------------------------------------------- robustness
+
+// A copy of `m` with Gaussian noise on every vertex: isotropic, per-axis
+// standard deviation s such that the mean displacement s * sqrt(8 / pi) is
+// `level` mean edge lengths (the paper's noise level). Box-Muller on
+// CGAL::Random, so the noise only depends on the seed.
+Mesh noisy_copy(const Mesh& m, double level, double mean_edge_length, unsigned int seed)
+{
+  Mesh out = m;
+  CGAL::Random rng(seed);
+  const double s = level * mean_edge_length / std::sqrt(8. / CGAL_PI);
+  auto gauss = [&] {
+    double u = rng.get_double();
+    while(u <= 0.) u = rng.get_double();
+    return std::sqrt(-2. * std::log(u)) * std::cos(2. * CGAL_PI * rng.get_double());
+  };
+  for(auto v : out.vertices())
+  {
+    const K::Point_3 p = out.point(v);
+    const double dx = gauss(), dy = gauss(), dz = gauss();
+    out.point(v) = K::Point_3(p.x() + s * dx, p.y() + s * dy, p.z() + s * dz);
+  }
+  return out;
+}
+
+// A copy of `m` with about `fraction` of its faces removed as `holes` small
+// holes: each hole is the set of faces incident to a ball of vertices grown
+// breadth-first from a random vertex, and holes stay at least two rings
+// apart (so the result stays a 2-manifold with boundary). `map` receives the
+// new index of each old vertex (-1: removed). Returns false if a face could
+// not be re-added (a non-manifold configuration).
+bool holed_copy(const Mesh& m, double fraction, std::size_t holes, unsigned int seed, Mesh& out,
+                std::vector<std::ptrdiff_t>& map)
+{
+  const std::size_t nv = num_vertices(m), nf = num_faces(m);
+  std::vector<char> removed_face(nf, 0), blocked(nv, 0), in_ball(nv, 0);
+  CGAL::Random rng(seed);
+  const std::size_t per_hole = (std::max)(std::size_t(1), std::size_t(fraction * double(nf) / double(holes)));
+  for(std::size_t h = 0; h < holes; ++h)
+  {
+    Mesh::Vertex_index c;
+    for(int attempt = 0;; ++attempt)
+    {
+      c = Mesh::Vertex_index(Mesh::size_type(rng.uniform_int<std::size_t>(0, nv - 1)));
+      if(!blocked[c.idx()] && !m.is_border(c)) break;
+      if(attempt > 1000) return false;
+    }
+    std::vector<Mesh::Vertex_index> ball(1, c), queue(1, c);
+    in_ball[c.idx()] = 1;
+    std::size_t count = 0;
+    auto add_faces = [&](Mesh::Vertex_index v) {
+      for(auto f : CGAL::faces_around_target(m.halfedge(v), m))
+        if(f != Mesh::null_face() && !removed_face[f.idx()]) { removed_face[f.idx()] = 1; ++count; }
+    };
+    add_faces(c);
+    for(std::size_t q = 0; q < queue.size() && count < per_hole; ++q)
+      for(auto u : CGAL::vertices_around_target(m.halfedge(queue[q]), m))
+      {
+        if(count >= per_hole) break;
+        if(in_ball[u.idx()] || blocked[u.idx()]) continue;
+        in_ball[u.idx()] = 1;
+        ball.push_back(u);
+        queue.push_back(u);
+        add_faces(u);
+      }
+    // block the ball and two rings around it
+    std::vector<Mesh::Vertex_index> ring = ball;
+    for(int r = 0; r < 3; ++r)
+    {
+      std::vector<Mesh::Vertex_index> next;
+      for(auto v : ring)
+      {
+        if(blocked[v.idx()] == 1) continue;
+        blocked[v.idx()] = 1;
+        for(auto u : CGAL::vertices_around_target(m.halfedge(v), m)) next.push_back(u);
+      }
+      ring.swap(next);
+    }
+    for(auto v : ring) blocked[v.idx()] = 1;
+  }
+  out.clear();
+  map.assign(nv, -1);
+  for(auto f : m.faces())
+    if(!removed_face[f.idx()])
+      for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) map[v.idx()] = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(map[v] == 0) map[v] = std::ptrdiff_t(out.add_vertex(m.point(Mesh::Vertex_index(Mesh::size_type(v)))).idx());
+  for(auto f : m.faces())
+  {
+    if(removed_face[f.idx()]) continue;
+    std::vector<Mesh::Vertex_index> vs;
+    for(auto v : CGAL::vertices_around_face(m.halfedge(f), m))
+      vs.push_back(Mesh::Vertex_index(Mesh::size_type(map[v.idx()])));
+    if(out.add_face(vs) == Mesh::null_face()) return false;
+  }
+  return true;
+}
+
+// tau by vertex index for the given sample vertices: heat-method geodesics,
+// SDF signatures and similar pairs, voting, default parameters
+std::vector<double> irsa_tau(const Mesh& m, const std::vector<std::size_t>& samples, std::size_t& similar)
+{
+  IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const Pairs pairs = similar_pairs(m, D, IRS::vertex_sdf_values(m), IRS::vertex_areas(m));
+  similar = pairs.size();
+  auto tau = get(CGAL::dynamic_vertex_property_t<double>(), m);
+  IRS::compute_irsa_transform(m, D, pairs, tau);
+  std::vector<double> out(num_vertices(m));
+  for(auto v : m.vertices()) out[v.idx()] = get(tau, v);
+  return out;
+}
+
+// ||tau' - tau|| / ||tau|| over the vertices kept (map[v] >= 0: index in tau')
+double relative_l2(const std::vector<double>& tau, const std::vector<double>& tau2, const std::vector<std::ptrdiff_t>& map)
+{
+  double num = 0., den = 0.;
+  for(std::size_t v = 0; v < tau.size(); ++v)
+  {
+    if(map[v] < 0) continue;
+    const double d = tau2[std::size_t(map[v])] - tau[v];
+    num += d * d;
+    den += tau[v] * tau[v];
+  }
+  return den > 0. ? std::sqrt(num / den) : 0.;
+}
+
+// Same sample vertices on the perturbed meshes (the vertex set is the same
+// under noise; with holes, the samples whose vertex survives), so the error
+// measures the transform, not a new sampling. Fig. 10-11 of the paper.
+void robustness(const std::string& name, const Mesh& m, std::size_t n)
+{
+  const double e = mean_edge(m);
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
+  std::size_t similar = 0;
   CGAL::Real_timer t;
   t.start();
-  std::vector<double> tau_ref;
-  const IRS::Irsa_voting_result ref = IRS::internal::reference_irsa_transform(m, D, pairs, tau_ref);
-  const double t_ref = t.time();
-  auto tau = m.add_property_map<Mesh::Vertex_index, double>("v:tau", 0.).first;
-  t.reset();
-  const IRS::Irsa_voting_result seq = IRS::compute_irsa_transform<CGAL::Sequential_tag>(m, D, pairs, tau);
-  const double t_seq = t.time();
-  std::vector<double> tau_seq(num_vertices(m));
-  for(auto v : m.vertices()) tau_seq[v.idx()] = tau[v];
-  t.reset();
-  const IRS::Irsa_voting_result par = IRS::compute_irsa_transform<CGAL::Parallel_if_available_tag>(m, D, pairs, tau);
-  const double t_par = t.time();
-  double max_rel = 0.;
-  std::size_t bit_different = 0;
-  for(auto v : m.vertices())
+  const std::vector<double> tau = irsa_tau(m, samples, similar);
+  std::cout << "| " << name << " | original | " << num_vertices(m) << " / " << samples.size() << " | " << similar
+            << " | 0 | " << std::fixed << std::setprecision(1) << t.time() << " |" << std::endl;
+  std::vector<std::ptrdiff_t> identity(num_vertices(m));
+  for(std::size_t v = 0; v < identity.size(); ++v) identity[v] = std::ptrdiff_t(v);
+  for(double level : {0.1, 0.2, 0.42})
   {
-    const double a = tau_ref[v.idx()], b = tau[v], c = tau_seq[v.idx()];
-    if(a != b || a != c) ++bit_different;
-    const double scale = (std::max)(std::abs(a), 1e-300);
-    max_rel = (std::max)({max_rel, std::abs(a - b) / scale, std::abs(a - c) / scale});
+    t.reset();
+    const Mesh noisy = noisy_copy(m, level, e, 7u);
+    const std::vector<double> tau2 = irsa_tau(noisy, samples, similar);
+    std::cout << "| " << name << " | noise " << std::setprecision(2) << level << " | " << num_vertices(noisy) << " / "
+              << samples.size() << " | " << similar << " | " << std::setprecision(3)
+              << relative_l2(tau, tau2, identity) << " | " << std::setprecision(1) << t.time() << " |" << std::endl;
   }
-  bool same_pairs = ref.voting_pairs.size() == par.voting_pairs.size();
-  for(std::size_t k = 0; same_pairs && k < ref.voting_pairs.size(); ++k)
-    same_pairs = ref.voting_pairs[k].eligible_pairs == par.voting_pairs[k].eligible_pairs &&
-                 ref.voting_pairs[k].boundary == par.voting_pairs[k].boundary;
-  std::cout << "\n## Fast voting vs the literal reference: " << path << ", " << n << " samples, similarity threshold "
-            << similarity_threshold << ": " << pairs.size() << " similar pairs, " << ref.voting_pairs.size()
-            << " voted\n\n"
-            << "| reference s | fast, 1 thread s | fast, parallel s | speed-up (1 thread) | speed-up (parallel) |"
-               " same voted pairs and eligible pairs | tau: max relative difference | bit-different values |\n"
-            << "|---|---|---|---|---|---|---|---|\n"
-            << "| " << std::setprecision(3) << t_ref << " | " << t_seq << " | " << t_par << " | " << std::setprecision(0)
-            << t_ref / t_seq << "x | " << t_ref / t_par << "x | " << (same_pairs ? "yes" : "NO") << " | "
-            << std::scientific << std::setprecision(1) << max_rel << std::fixed << " | " << bit_different << " |"
-            << std::endl;
-  (void)seq;
+  for(std::size_t holes : {std::size_t(8), std::size_t(16)})
+  {
+    t.reset();
+    Mesh holed;
+    std::vector<std::ptrdiff_t> map;
+    if(!holed_copy(m, 0.03, holes, 11u, holed, map))
+    {
+      std::cout << "| " << name << " | " << holes << " holes | (could not cut them) | | | |" << std::endl;
+      continue;
+    }
+    std::vector<std::size_t> kept;
+    for(std::size_t s : samples)
+      if(map[s] >= 0) kept.push_back(std::size_t(map[s]));
+    const std::vector<double> tau2 = irsa_tau(holed, kept, similar);
+    std::cout << "| " << name << " | " << holes << " holes, " << std::setprecision(2)
+              << 100. * double(num_faces(m) - num_faces(holed)) / double(num_faces(m)) << " % faces removed | "
+              << num_vertices(holed) << " / " << kept.size() << " | " << similar << " | " << std::setprecision(3)
+              << relative_l2(tau, tau2, map) << " | " << std::setprecision(1) << t.time() << " |" << std::endl;
+  }
+}
+
+void robustness_study(const std::vector<std::string>& dirs, const std::string& faust, std::size_t n)
+{
+  std::cout << "\n## Robustness (paper Fig. 10-11): ||tau' - tau|| / ||tau|| (L2 over the vertices kept)\n"
+               "Same sample vertices (farthest-point, seed 1) on the perturbed copies; heat-method geodesics, SDF\n"
+               "similarity and voting recomputed on each copy with the default parameters. Noise: isotropic\n"
+               "Gaussian, mean displacement = level x mean edge length, seed 7. Holes: 3 % of the faces, as\n"
+               "balls of faces around random vertices, seed 11.\n\n"
+               "| shape | perturbation | vertices / samples | similar pairs | relative L2 error | time s |\n"
+               "|---|---|---|---|---|---|\n";
+  std::string camel;
+  if(find_file(dirs, "camel.off", camel))
+  {
+    Mesh m;
+    if(CGAL::IO::read_polygon_mesh(camel, m) && !is_empty(m))
+      robustness("camel", m, n);
+  }
+  if(!faust.empty())
+  {
+    Mesh m;
+    if(CGAL::IO::read_polygon_mesh(faust + "/tr_reg_000.off", m) && !is_empty(m))
+      robustness("FAUST tr_reg_000", m, (std::min)(n, std::size_t(num_vertices(m)) / 4));
+  }
 }
 
 // ---------------------------------------------------------------- floor study
@@ -388,7 +604,9 @@ int main(int argc, char** argv)
   std::vector<std::string> meshes = {"camel.off", "man.off"};
   std::size_t reference_samples = 300;
   int threads = 0;
-  bool floor_study = false;
+  bool floor_study = false, robust = false;
+  std::size_t robustness_samples = 1000;
+  std::vector<double> reference_thresholds = {IRS::default_similarity_threshold, 0.05, 0.1, 0.2};
   std::string faust;
   for(int i = 1; i < argc; ++i)
   {
@@ -398,6 +616,10 @@ int main(int argc, char** argv)
     else if(a == "--threads" && i + 1 < argc) threads = std::stoi(argv[++i]);
     else if(a == "--reference-samples" && i + 1 < argc) reference_samples = std::stoul(argv[++i]);
     else if(a == "--floor-study") floor_study = true;
+    else if(a == "--robustness") robust = true;
+    else if(a == "--robustness-samples" && i + 1 < argc) robustness_samples = std::stoul(argv[++i]);
+    else if(a == "--reference-eps" && i + 1 < argc)
+    { reference_thresholds.clear(); for(auto& x : split(argv[++i])) reference_thresholds.push_back(std::stod(x)); }
     else if(a == "--faust" && i + 1 < argc) faust = argv[++i];
     else dirs.push_back(a);
   }
@@ -414,11 +636,11 @@ int main(int argc, char** argv)
   if(reference_samples > 0)
   {
     std::string camel;
-    // the paper's similarity threshold, and a looser one: the reference costs
-    // O(similar pairs^2 x |beta|), the fast voting about O(similar pairs x (V + similar pairs))
+    // the paper's similarity threshold and looser ones: the reference costs
+    // O(voting pairs x (V + |beta| x similar pairs)), the fast voting about
+    // O(voting pairs x (V / 16 + similar pairs + E K) + similar pairs x |beta|)
     if(find_file(dirs, meshes.front(), camel))
-      for(double eps_sim : {IRS::default_similarity_threshold, 0.1})
-        versus_reference(camel, reference_samples, eps_sim);
+      versus_reference(camel, reference_samples, reference_thresholds);
   }
   for(const std::string& name : meshes)
   {
@@ -426,6 +648,8 @@ int main(int argc, char** argv)
     if(find_file(dirs, name, path)) scaling(path, sample_counts);
     else std::cout << "\n" << name << " not found in the given directories\n";
   }
+  if(robust)
+    robustness_study(dirs, faust, robustness_samples);
   if(floor_study)
   {
     quadruple_study();

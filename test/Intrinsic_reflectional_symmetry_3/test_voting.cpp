@@ -1,7 +1,8 @@
 // The IRSA transform (voting, paper Alg. 1-2): the fast voting equals the
 // literal reference (same voted boundaries, midpoints and eligible pairs per
 // voting pair; same mu and tau), the transform has ridges on known symmetry
-// axes, and it is deterministic at any thread count.
+// axes, it is deterministic at any thread count, and it changes little under
+// vertex noise and small holes (paper Fig. 10-11).
 //
 // Similar pairs: from the package's SDF signature filter
 // (`similar_sample_pairs()`), and, to test the voting apart from the
@@ -482,6 +483,178 @@ TEST(Voting, FaustHumanAxisRidge)
   std::cout << "[ FAUST tr_reg_000 ] " << pairs.size() << " similar pairs, " << r.voting_pairs.size()
             << " voted; mean tau on the " << axis_points << " axis points / mean tau = " << ratio << std::endl;
   EXPECT_GE(ratio, 3.);
+}
+
+// ---------------------------------------------------------------- robustness
+
+namespace {
+
+// A copy with isotropic Gaussian vertex noise whose mean displacement is
+// `level` mean edge lengths (per-axis deviation level * e / sqrt(8 / pi)).
+Mesh noisy_copy(const Mesh& m, double level, double mean_edge_length, unsigned int seed)
+{
+  Mesh out = m;
+  CGAL::Random rng(seed);
+  const double s = level * mean_edge_length / std::sqrt(8. / CGAL_PI);
+  auto gauss = [&] {
+    double u = rng.get_double();
+    while(u <= 0.) u = rng.get_double();
+    return std::sqrt(-2. * std::log(u)) * std::cos(2. * CGAL_PI * rng.get_double());
+  };
+  for(auto v : out.vertices())
+  {
+    const Point p = out.point(v);
+    const double dx = gauss(), dy = gauss(), dz = gauss();
+    out.point(v) = Point(p.x() + s * dx, p.y() + s * dy, p.z() + s * dz);
+  }
+  return out;
+}
+
+// A copy with about `fraction` of the faces removed as `holes` holes (faces
+// around breadth-first balls of vertices, two rings apart); map: old vertex
+// -> new vertex (-1: removed). False if the result would not be a manifold.
+bool holed_copy(const Mesh& m, double fraction, std::size_t holes, unsigned int seed, Mesh& out,
+                std::vector<std::ptrdiff_t>& map)
+{
+  const std::size_t nv = num_vertices(m), nf = num_faces(m);
+  std::vector<char> removed_face(nf, 0), blocked(nv, 0), in_ball(nv, 0);
+  CGAL::Random rng(seed);
+  const std::size_t per_hole = (std::max)(std::size_t(1), std::size_t(fraction * double(nf) / double(holes)));
+  for(std::size_t h = 0; h < holes; ++h)
+  {
+    Mesh::Vertex_index c;
+    for(int attempt = 0;; ++attempt)
+    {
+      c = Mesh::Vertex_index(Mesh::size_type(rng.uniform_int<std::size_t>(0, nv - 1)));
+      if(!blocked[c.idx()] && !m.is_border(c)) break;
+      if(attempt > 1000) return false;
+    }
+    std::vector<Mesh::Vertex_index> ball(1, c), queue(1, c);
+    in_ball[c.idx()] = 1;
+    std::size_t count = 0;
+    auto add_faces = [&](Mesh::Vertex_index v) {
+      for(auto f : CGAL::faces_around_target(m.halfedge(v), m))
+        if(f != Mesh::null_face() && !removed_face[f.idx()]) { removed_face[f.idx()] = 1; ++count; }
+    };
+    add_faces(c);
+    for(std::size_t q = 0; q < queue.size() && count < per_hole; ++q)
+      for(auto u : CGAL::vertices_around_target(m.halfedge(queue[q]), m))
+      {
+        if(count >= per_hole) break;
+        if(in_ball[u.idx()] || blocked[u.idx()]) continue;
+        in_ball[u.idx()] = 1;
+        ball.push_back(u);
+        queue.push_back(u);
+        add_faces(u);
+      }
+    std::vector<Mesh::Vertex_index> ring = ball;
+    for(int r = 0; r < 3; ++r)
+    {
+      std::vector<Mesh::Vertex_index> next;
+      for(auto v : ring)
+      {
+        if(blocked[v.idx()] == 1) continue;
+        blocked[v.idx()] = 1;
+        for(auto u : CGAL::vertices_around_target(m.halfedge(v), m)) next.push_back(u);
+      }
+      ring.swap(next);
+    }
+    for(auto v : ring) blocked[v.idx()] = 1;
+  }
+  out.clear();
+  map.assign(nv, -1);
+  for(auto f : m.faces())
+    if(!removed_face[f.idx()])
+      for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) map[v.idx()] = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(map[v] == 0) map[v] = std::ptrdiff_t(out.add_vertex(m.point(Mesh::Vertex_index(Mesh::size_type(v)))).idx());
+  for(auto f : m.faces())
+  {
+    if(removed_face[f.idx()]) continue;
+    std::vector<Mesh::Vertex_index> vs;
+    for(auto v : CGAL::vertices_around_face(m.halfedge(f), m))
+      vs.push_back(Mesh::Vertex_index(Mesh::size_type(map[v.idx()])));
+    if(out.add_face(vs) == Mesh::null_face()) return false;
+  }
+  return true;
+}
+
+// the whole transform for given sample vertices: heat geodesics, SDF
+// similarity, voting with `np`
+template <typename NP>
+std::vector<double> transform_of(const Mesh& m, const std::vector<std::size_t>& samples, const NP& np)
+{
+  IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+  const auto D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  std::vector<double> tau;
+  fast_transform(m, D, sdf_similar_pairs(m, D), tau, np);
+  return tau;
+}
+
+double relative_l2(const std::vector<double>& tau, const std::vector<double>& tau2, const std::vector<std::ptrdiff_t>& map)
+{
+  double num = 0., den = 0.;
+  for(std::size_t v = 0; v < tau.size(); ++v)
+  {
+    if(map[v] < 0) continue;
+    const double d = tau2[std::size_t(map[v])] - tau[v];
+    num += d * d;
+    den += tau[v] * tau[v];
+  }
+  return den > 0. ? std::sqrt(num / den) : 0.;
+}
+
+} // namespace
+
+TEST(Voting, RobustToNoiseAndSmallHoles)
+{
+  // Paper Fig. 10-11 at small scale: the relative L2 change of tau under
+  // Gaussian vertex noise and ~3 % of the faces removed as small holes, with
+  // the same sample vertices (those that survive, for holes). The input mesh
+  // is never modified: the perturbations are made on copies.
+  const auto shape = IRS::generate_snowman<Mesh>(1500);
+  ASSERT_GT(shape.mean_edge_length, 0.);
+  const Mesh& m = shape.mesh;
+  const std::size_t n = 300;
+  const auto samples = IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
+  // default parameters: with the paper's purely relative distance test (floor
+  // 0), noise breaks the exact symmetry of the model and almost nothing
+  // votes any more (relative error ~1 at every level; see the floor study)
+  const auto np = IRS::parameters::default_values();
+  std::vector<Point> before = vertex_points(m);
+  const std::vector<double> tau = transform_of(m, samples, np);
+  double norm = 0.;
+  for(double t : tau) norm += t * t;
+  ASSERT_GT(norm, 0.);
+  std::vector<std::ptrdiff_t> identity(num_vertices(m));
+  for(std::size_t v = 0; v < identity.size(); ++v) identity[v] = std::ptrdiff_t(v);
+
+  // Measured: 0.10 and 0.15 at 0.1 and 0.2 mean edge lengths; at 0.42 the
+  // transform collapses (relative error ~1: almost nothing votes on the
+  // noisy copy), which is reported by the benchmark, not asserted here.
+  for(double level : {0.1, 0.2, 0.42})
+  {
+    const Mesh noisy = noisy_copy(m, level, shape.mean_edge_length, 7u);
+    const double err = relative_l2(tau, transform_of(noisy, samples, np), identity);
+    std::cout << "[ snowman, noise " << level << " mean edge lengths ] relative L2 error of tau " << err << std::endl;
+    if(level <= 0.2)
+      EXPECT_LT(err, 2.5 * level + 0.05) << "noise " << level;
+  }
+  Mesh holed;
+  std::vector<std::ptrdiff_t> map;
+  ASSERT_TRUE(holed_copy(m, 0.03, 6, 11u, holed, map));
+  const double removed = 1. - double(num_faces(holed)) / double(num_faces(m));
+  EXPECT_GT(removed, 0.02);
+  EXPECT_LT(removed, 0.045);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(holed));
+  std::vector<std::size_t> kept;
+  for(std::size_t s : samples)
+    if(map[s] >= 0) kept.push_back(std::size_t(map[s]));
+  const double err = relative_l2(tau, transform_of(holed, kept, np), map);
+  std::cout << "[ snowman, 6 holes, " << 100. * removed << " % of the faces ] relative L2 error of tau on the "
+            << "surviving vertices " << err << std::endl;
+  EXPECT_LT(err, 0.6); // measured 0.36
+  EXPECT_EQ(vertex_points(m), before); // the input is untouched
 }
 
 // ---------------------------------------------------------------- determinism

@@ -26,16 +26,22 @@
 
 // The fast per-pair voting of Alg. 1-2. It computes exactly what the literal
 // reference (reference_voting.h) computes, in another order:
-// - beta(a,b): f = d(a,.) - d(b,.) in one sweep of the two rows of D; the
-//   bisector test then only runs in the vertex blocks where f can change sign
-//   (per-block bounds decide most blocks from one vertex);
-// - the three m'-independent distance tests: one scan of the similar pairs,
-//   grouped by first sample, with a pair of windows per sample (or a grid
-//   range query over (d(b,q), d(a,q)) when the similar pairs are many);
+// - beta(a,b): per-block bounds and the distances to each block's first
+//   vertex (a table) decide the sign of f = d(a,.) - d(b,.) on most blocks;
+//   the bisector test then only runs on the vertices of the blocks where f
+//   can change sign;
+// - the caller groups the voting pairs by midpoint m, so that the column
+//   D(., m) (a cache miss per sample) is read once per midpoint;
+// - the three m'-independent distance tests: one flat, branch-free scan of
+//   the similar pairs against per-sample windows (or a grid range query over
+//   (d(b,q), d(a,q)) when the similar pairs are many), exact tests on the hits;
 // - locality (DBSCAN) and the axial counts once per {a,b}: DBSCAN with
-//   precomputed sample neighbourhoods, the axial counts on rows of the
-//   transposed sample matrix with an early stop per pair;
-// - the loop over m' in beta only evaluates d(p,m') ~ d(q,m') and the Gaussian.
+//   precomputed sample neighbourhoods; the axial counts compared pair by
+//   compared pair (least popular first) for all undecided pairs at once, on
+//   rows of the sample matrix whose columns are in a spatially coherent
+//   sample order, each pair leaving as soon as its verdict is certain;
+// - the loop over m' in beta only evaluates d(p,m') ~ d(q,m') (loads without
+//   branches in between) and the Gaussian of the pairs that pass.
 // Votes are summed in the order of the canonical pair list, as the reference
 // does, so mu and tau are bit-identical to it.
 // Define CGAL_IRS_VOTING_STATS for a few extra counters (profiling only).
@@ -50,12 +56,13 @@ namespace internal {
 
 class Fast_voting
 {
+  typedef std::chrono::steady_clock Clock;
+
 public:
   enum Outcome { voted, disconnected, no_boundary, no_support };
 
   struct Scratch
   {
-    std::vector<float> f;                     // f = d(a,.) - d(b,.) at every vertex
     std::vector<std::uint32_t> vertex_stamp;  // beta marks
     std::uint32_t stamp = 0;
     std::vector<unsigned char> block_bits;
@@ -63,7 +70,10 @@ public:
     std::vector<std::uint32_t> sample_slot;   // index in U
     std::uint32_t sstamp = 0;
     std::vector<float> dist_to_m;             // D(x, m) for every sample x
+    std::size_t loaded_midpoint = std::size_t(-1);
     std::vector<float> coordinates;           // (d(a,x), d(b,x)) for every sample x
+    std::vector<float> windows;               // pair scan: intervals per sample
+    std::vector<std::uint32_t> hits;          // pair scan: pairs inside the windows
     std::vector<std::size_t> b_side, cell_start, cell_items;
     struct Candidate { std::size_t i, j, p, q; };
     std::vector<Candidate> candidates;
@@ -72,8 +82,11 @@ public:
     std::vector<std::size_t> kept;            // indices into candidates
     std::vector<std::size_t> cursor;          // grid construction
     std::vector<std::uint32_t> ss, ts;        // the kept pairs' samples
-    std::vector<std::uint32_t> counts, order, os, ot, cs, ct;
+    std::vector<std::uint32_t> counts, order, os, ot, rp, rq, active, axial_counts;
+    std::vector<unsigned char> axial_pass;
     std::vector<std::size_t> compared;
+    std::vector<std::uint32_t> pass;          // support: boundary positions that pass
+    std::vector<float> pass_distance;
 #ifdef CGAL_IRS_VOTING_STATS
     std::size_t stat_scanned_blocks = 0, stat_unknown_blocks = 0;
     std::size_t stat_axial_checks = 0, stat_axial_pairs = 0, stat_axial_e2 = 0;
@@ -94,12 +107,17 @@ public:
     // candidate pairs: by a scan of the similar pairs (P per voting pair)
     // unless they are many, by a range query over the samples otherwise
     use_pair_scan_ = s.similar_pairs.size() <= 32 * n;
-    // the similar pairs grouped by first sample (they are sorted)
-    first_offsets_.assign(n + 1, 0);
-    partners_.reserve(s.similar_pairs.size());
-    for(const auto& pr : s.similar_pairs) { ++first_offsets_[pr.first + 1]; partners_.push_back(std::uint32_t(pr.second)); }
-    for(std::size_t i = 0; i < n; ++i) first_offsets_[i + 1] += first_offsets_[i];
-    if(!use_pair_scan_)
+    // the similar pairs as a flat array of 32-bit sample indices, for the scan
+    if(use_pair_scan_)
+    {
+      pair_samples_.reserve(2 * s.similar_pairs.size());
+      for(const auto& pr : s.similar_pairs)
+      {
+        pair_samples_.push_back(std::uint32_t(pr.first));
+        pair_samples_.push_back(std::uint32_t(pr.second));
+      }
+    }
+    else
     {
       // similarity as a bit matrix: O(1) membership for range-query hits
       words_per_row_ = (n + 63) / 64;
@@ -125,12 +143,16 @@ public:
       neighbors_.insert(neighbors_.end(), lists[i].begin(), lists[i].end());
       neighbor_offsets_[i + 1] = neighbors_.size();
     }
-    // the sample matrix transposed: column p of dss as a contiguous row, for
-    // the axial-sym counts (d(s,p) for many s and a fixed p)
-    dss_t_.resize(n * n);
-    for_each_index(n, [&](std::size_t j) {
-      for(std::size_t i = 0; i < n; ++i)
-        dss_t_[j * n + i] = s.dss(i, j);
+    // the sample matrix with its columns in a spatially coherent order of the
+    // samples (rank_), for the axial-sym counts: the pairs a count compares lie
+    // in one region of the surface, and their entries then share cache lines
+    spatial_order();
+    rows_.resize(n * n);
+    for_each_index(n, [&](std::size_t i) {
+      float* out = rows_.data() + i * n;
+      const float* in = s.dss.row(i);
+      for(std::size_t j = 0; j < n; ++j)
+        out[rank_[j]] = in[j];
     });
     build_blocks();
   }
@@ -156,12 +178,12 @@ public:
   {
     Scratch sc;
     sc.vertex_stamp.assign(s_.mesh.number_of_vertices, 0);
-    sc.f.assign(s_.mesh.number_of_vertices, 0.f);
     sc.block_bits.assign(block_offsets_.size() - 1, 0);
     sc.sample_stamp.assign(s_.number_of_samples, 0);
     sc.sample_slot.assign(s_.number_of_samples, 0);
     sc.dist_to_m.assign(s_.number_of_samples, 0.f);
     sc.coordinates.assign(2 * s_.number_of_samples, 0.f);
+    sc.windows.assign(4 * s_.number_of_samples, 0.f);
     return sc;
   }
 
@@ -177,20 +199,74 @@ public:
     return (similar_[i * words_per_row_ + j / 64] >> (j % 64)) & 1u;
   }
 
+  /// The whole vote of the pair {a, b} (a < b): boundary_and_midpoint(),
+  /// load_midpoint() and support(), in that order.
   Outcome vote(std::size_t a, std::size_t b, Scratch& sc, std::size_t& midpoint,
-               std::vector<std::size_t>& boundary, std::vector<double>& support,
+               std::vector<std::size_t>& boundary, std::vector<double>& support_values,
                std::vector<std::pair<std::size_t, std::size_t>>& eligible) const
   {
-    boundary.clear(); support.clear(); eligible.clear();
-    sc.number_of_candidates = sc.number_after_locality = sc.number_after_axial = 0;
-    const Sample_distance_matrix& dss = s_.dss;
-    if(!std::isfinite(dss(a, b)))
-      return disconnected;
-    const Geodesic_distance_matrix& D = *s_.D;
-    const float* ra = D.row(a);
-    const float* rb = D.row(b);
+    support_values.clear(); eligible.clear();
+    const Outcome o = boundary_and_midpoint(a, b, sc, midpoint, boundary);
+    if(o != voted)
+      return o;
+    load_midpoint(midpoint, sc);
+    return support(a, b, midpoint, boundary, sc, support_values, eligible);
+  }
 
-    typedef std::chrono::steady_clock Clock;
+  /// beta(a, b) and its midpoint m; `voted` if beta is not empty.
+  Outcome boundary_and_midpoint(std::size_t a, std::size_t b, Scratch& sc, std::size_t& midpoint,
+                                std::vector<std::size_t>& boundary) const
+  {
+    boundary.clear();
+    if(!std::isfinite(s_.dss(a, b)))
+      return disconnected;
+    const float* ra = s_.D->row(a);
+    const float* rb = s_.D->row(b);
+    const Clock::time_point t0 = Clock::now();
+    find_boundary(a, b, ra, rb, sc, boundary);
+    if(!boundary.empty())
+    {
+      std::size_t m = boundary.front();
+      double best = std::numeric_limits<double>::infinity();
+      for(std::size_t v : boundary)
+      {
+        const double sum = double(ra[v]) + double(rb[v]);
+        if(sum < best) { best = sum; m = v; }
+      }
+      midpoint = m;
+    }
+    sc.stage_seconds[0] += std::chrono::duration<double>(Clock::now() - t0).count();
+    return boundary.empty() ? no_boundary : voted;
+  }
+
+  /// D(x, m) for every sample x, into the scratch. This column of D costs one
+  /// cache miss per sample: the caller groups the voting pairs by midpoint
+  /// (about ten pairs per midpoint on real shapes) and loads it once per group.
+  void load_midpoint(std::size_t m, Scratch& sc) const
+  {
+    if(sc.loaded_midpoint == m)
+      return;
+    const Clock::time_point t0 = Clock::now();
+    const Geodesic_distance_matrix& D = *s_.D;
+    const std::size_t nv = D.number_of_vertices();
+    const float* column = D.row(0) + m;
+    float* to_m = sc.dist_to_m.data();
+    for(std::size_t x = 0; x < s_.number_of_samples; ++x)
+      to_m[x] = column[x * nv];
+    sc.loaded_midpoint = m;
+    sc.stage_seconds[1] += std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+
+  /// The filters and mu along beta for the pair {a, b} whose boundary and
+  /// midpoint are given; load_midpoint(midpoint) must have been called.
+  Outcome support(std::size_t a, std::size_t b, std::size_t m, const std::vector<std::size_t>& boundary,
+                  Scratch& sc, std::vector<double>& support_values,
+                  std::vector<std::pair<std::size_t, std::size_t>>& eligible) const
+  {
+    support_values.clear(); eligible.clear();
+    sc.number_of_candidates = sc.number_after_locality = sc.number_after_axial = 0;
+    CGAL_assertion(sc.loaded_midpoint == m);
+    const Geodesic_distance_matrix& D = *s_.D;
     Clock::time_point t0 = Clock::now(), t1;
     auto lap = [&](int stage) {
       t1 = Clock::now();
@@ -198,19 +274,7 @@ public:
       t0 = t1;
     };
 
-    find_boundary(a, b, ra, rb, sc, boundary);
-    if(boundary.empty()) { lap(0); return no_boundary; }
-    std::size_t m = boundary.front();
-    double best = std::numeric_limits<double>::infinity();
-    for(std::size_t v : boundary)
-    {
-      const double sum = double(ra[v]) + double(rb[v]);
-      if(sum < best) { best = sum; m = v; }
-    }
-    midpoint = m;
-    lap(0);
-
-    find_candidates(a, b, m, sc);
+    find_candidates(a, b, sc);
     sc.number_of_candidates = sc.candidates.size();
     sc.total_candidates += sc.number_of_candidates;
     lap(1);
@@ -230,28 +294,78 @@ public:
       return no_support;
 
     // mu(m') for every m' in beta; pairs in canonical order, as the reference
-    support.assign(boundary.size(), 0.);
+    support_values.assign(boundary.size(), 0.);
     const Distance_tolerance& tol = s_.settings.tolerance;
     const double inv_sigma2 = s_.settings.inv_sigma2;
     const std::size_t nb = boundary.size();
+    // the loads from D are cache misses: they are issued without branches
+    // in between (so that they overlap), the few that pass are weighted after
+    std::vector<std::uint32_t>& pass = sc.pass;
+    std::vector<float>& pd = sc.pass_distance;
+    pass.resize(nb);
+    pd.resize(nb);
     for(std::size_t k : sc.kept)
     {
       const auto& c = sc.candidates[k];
       eligible.emplace_back(c.p, c.q);
       const float* rp = D.row(c.p);
       const float* rq = D.row(c.q);
+      std::size_t np = 0;
       for(std::size_t i = 0; i < nb; ++i)
       {
         const float dp = rp[boundary[i]], dq = rq[boundary[i]];
-        if(tol(dp, dq))
-          support[i] += gaussian_weight(dp, inv_sigma2);
+        pass[np] = std::uint32_t(i);
+        pd[np] = dp;
+        np += std::size_t(tol(dp, dq));
       }
+      for(std::size_t j = 0; j < np; ++j)
+        support_values[pass[j]] += gaussian_weight(pd[j], inv_sigma2);
     }
     lap(4);
     return voted;
   }
 
 private:
+  // A spatially coherent order of the samples: recursive bisection of the
+  // sample set by the sign of d(x,.) - d(y,.) for two far apart samples x, y
+  // (median split), down to groups of 16. Only the memory layout depends on it.
+  void spatial_order()
+  {
+    const Sample_distance_matrix& dss = s_.dss;
+    const std::size_t n = s_.number_of_samples;
+    std::vector<std::uint32_t> order(n);
+    for(std::size_t i = 0; i < n; ++i) order[i] = std::uint32_t(i);
+    // finite stand-in for distances to other components (keeps the keys comparable)
+    auto d = [&](std::size_t x, std::size_t i) {
+      const float v = dss(x, i);
+      return std::isfinite(v) ? double(v) : 1e30;
+    };
+    std::vector<std::pair<std::size_t, std::size_t>> todo(1, std::make_pair(std::size_t(0), n));
+    while(!todo.empty())
+    {
+      const std::size_t lo = todo.back().first, hi = todo.back().second;
+      todo.pop_back();
+      if(hi - lo <= 16) continue;
+      std::size_t x = order[lo], y = order[lo];
+      double far = -1.;
+      for(std::size_t k = lo; k < hi; ++k)
+        if(d(order[lo], order[k]) > far) { far = d(order[lo], order[k]); x = order[k]; }
+      far = -1.;
+      for(std::size_t k = lo; k < hi; ++k)
+        if(d(x, order[k]) > far) { far = d(x, order[k]); y = order[k]; }
+      const std::size_t mid = lo + (hi - lo) / 2;
+      std::nth_element(order.begin() + lo, order.begin() + mid, order.begin() + hi,
+                       [&](std::uint32_t i, std::uint32_t j) {
+                         const double ki = d(x, i) - d(y, i), kj = d(x, j) - d(y, j);
+                         return ki < kj || (ki == kj && i < j);
+                       });
+      todo.emplace_back(lo, mid);
+      todo.emplace_back(mid, hi);
+    }
+    rank_.resize(n);
+    for(std::size_t i = 0; i < n; ++i) rank_[order[i]] = std::uint32_t(i);
+  }
+
   // Vertex blocks of about `block_size` vertices, grown by breadth-first
   // search so that they are compact on the surface whatever the vertex order,
   // and, for every sample x and block B with first vertex c, a bound
@@ -306,7 +420,7 @@ private:
 
     const std::size_t n = s_.number_of_samples;
     const float inf = std::numeric_limits<float>::infinity();
-    block_bound_.assign(n * nblocks, 0.f);
+    block_info_.assign(2 * n * nblocks, 0.f);
     for_each_index(n, [&](std::size_t x) {
       const float* r = s_.D->row(x);
       for(std::size_t blk = 0; blk < nblocks; ++blk)
@@ -320,7 +434,8 @@ private:
           if(std::isfinite(dv)) bound = (std::max)(bound, std::abs(double(dv) - double(dc)));
         }
         // widened by more than the rounding to float
-        block_bound_[x * nblocks + blk] = float(bound * (1. + 1e-6));
+        block_info_[2 * (x * nblocks + blk)] = dc;
+        block_info_[2 * (x * nblocks + blk) + 1] = float(bound * (1. + 1e-6));
       }
     });
   }
@@ -330,28 +445,28 @@ private:
   {
     const Voting_mesh& mesh = s_.mesh;
     const std::size_t nblocks = block_offsets_.size() - 1;
-    const float* la = block_bound_.data() + a * nblocks;
-    const float* lb = block_bound_.data() + b * nblocks;
-    // f everywhere, in one sequential sweep of the two rows: the block passes
-    // below then read it in cache instead of reading D at scattered columns
-    float* f = sc.f.data();
-    for(std::size_t v = 0; v < mesh.number_of_vertices; ++v)
-      f[v] = bisector_value(ra, rb, v);
+    // (d(x, c), L(x, B)) for the first vertex c of each block B, for x = a and b
+    const float* ia = block_info_.data() + 2 * a * nblocks;
+    const float* ib = block_info_.data() + 2 * b * nblocks;
+    // f is evaluated where needed: at the block centres from the table, and at
+    // the vertices of the few blocks near the bisector from the rows of D
+    auto f = [&](std::size_t v) { return bisector_value(ra, rb, v); };
     // pass 1: the sign of f over each block: 1: f < 0 throughout, 2: f > 0
     // throughout, 3: no finite value (another component), 4: mixed or zero.
     // The bound decides most blocks from their first vertex alone; the others
     // are classified vertex by vertex.
     for(std::size_t blk = 0; blk < nblocks; ++blk)
     {
-      const std::size_t c = block_vertices_[block_offsets_[blk]];
+      const float la = ia[2 * blk + 1], lb = ib[2 * blk + 1];
+      const float fcf = ia[2 * blk] - ib[2 * blk]; // == f(c)
       unsigned char status = 0;
-      if(std::isnan(f[c]))
-        status = (std::isfinite(la[blk]) && std::isfinite(lb[blk])) ? 3 : 0;
+      if(std::isnan(fcf))
+        status = (std::isfinite(la) && std::isfinite(lb)) ? 3 : 0;
       else
       {
         // the margin covers the rounding of f(c) to float
-        const double fc = f[c];
-        const double bound = double(la[blk]) + double(lb[blk]) + 1e-6 * std::abs(fc);
+        const double fc = fcf;
+        const double bound = double(la) + double(lb) + 1e-6 * std::abs(fc);
         if(fc < -bound) status = 1;
         else if(fc > bound) status = 2;
       }
@@ -360,7 +475,7 @@ private:
         unsigned char bits = 0; // 1: some f < 0, 2: some f > 0, 4: some f == 0
         for(std::size_t k = block_offsets_[blk]; k < block_offsets_[blk + 1]; ++k)
         {
-          const float fv = f[block_vertices_[k]];
+          const float fv = f(block_vertices_[k]);
           bits |= (unsigned char)((fv < 0.f) | ((fv > 0.f) << 1) | ((fv == 0.f) << 2));
         }
         status = (bits == 1 || bits == 2) ? bits : (bits == 0 ? 3 : 4);
@@ -392,12 +507,12 @@ private:
       for(std::size_t k = block_offsets_[blk]; k < block_offsets_[blk + 1]; ++k)
       {
         const std::size_t v = block_vertices_[k];
-        const float fv = f[v];
+        const float fv = f(v);
         if(fv == 0.f) { mark(v, sc, boundary); continue; }
         for(std::size_t l = mesh.adjacency_offsets[v]; l < mesh.adjacency_offsets[v + 1]; ++l)
         {
           const std::size_t u = mesh.adjacency[l];
-          const std::size_t w = bisector_endpoint(v, fv, u, f[u]);
+          const std::size_t w = bisector_endpoint(v, fv, u, f(u));
           if(w != std::size_t(-1)) mark(w, sc, boundary);
         }
       }
@@ -414,23 +529,17 @@ private:
 
   // Pairs {p,q} (p on a's side) that are similar and pass the three
   // m'-independent distance tests, in canonical order.
-  CGAL_IRS_VOTING_STAGE void find_candidates(std::size_t a, std::size_t b, std::size_t m, Scratch& sc) const
+  CGAL_IRS_VOTING_STAGE void find_candidates(std::size_t a, std::size_t b, Scratch& sc) const
   {
     const Sample_distance_matrix& dss = s_.dss;
-    const Geodesic_distance_matrix& D = *s_.D;
     const Distance_tolerance& tol = s_.settings.tolerance;
     const std::size_t n = s_.number_of_samples;
     const float* dA = dss.row(a);
     const float* dB = dss.row(b);
 
     sc.candidates.clear();
-    // d(x, m) for every sample x, read down the column of m in one go: the
-    // independent loads overlap, unlike scattered reads inside the tests
-    float* to_m = sc.dist_to_m.data();
-    const std::size_t nv = D.number_of_vertices();
-    const float* column = D.row(0) + m;
-    for(std::size_t x = 0; x < n; ++x)
-      to_m[x] = column[x * nv];
+    // d(x, m) for every sample x: loaded by load_midpoint(m)
+    const float* to_m = sc.dist_to_m.data();
     // the m'-independent distance tests of a pair p (a's side), q (b's side)
     // that already passed d(a,p) ~ d(b,q) and d(a,q) ~ d(b,p)
     auto test_at_m = [&](std::size_t p, std::size_t q) {
@@ -442,41 +551,55 @@ private:
 
     if(use_pair_scan_)
     {
-      // a scan of the similar pairs, in their canonical order: the output
-      // needs no sort; (d(a,.), d(b,.)) interleaved so that a pair reads its
-      // two samples' coordinates with two loads
-      float* co = sc.coordinates.data();
-      for(std::size_t x = 0; x < n; ++x) { co[2 * x] = dA[x]; co[2 * x + 1] = dB[x]; }
-      // The pairs come grouped by their first sample i, in canonical order.
-      // Whichever of i and j is on a's side, the two tests say d(b,j) ~ d(a,i)
-      // and d(a,j) ~ d(b,i): each i gets two windows (conservative intervals
-      // of the test), each partner j costs four comparisons, and the exact
-      // tests run on the few j inside both windows.
-      for(std::size_t i = 0; i < n; ++i)
+      // A scan of the similar pairs {i, j} (i < j) in their canonical order
+      // (the output needs no sort). Whichever of i and j is on a's side, the
+      // two tests say d(b,j) ~ d(a,i) and d(a,j) ~ d(b,i): a window test on
+      // j's coordinates (d(a,j), d(b,j)) against conservative intervals of
+      // the test computed once per sample i. The scan is one flat loop
+      // without branches that compacts the few pairs inside both windows;
+      // the exact tests then run on those.
+      float* co = sc.coordinates.data(); // (d(a,x), d(b,x))
+      float* win = sc.windows.data();    // intervals for d(b,j) and d(a,j)
+      const float eps = float(tol.eps), floor = float(tol.floor);
+      const float inv = 1.f / (1.f - eps);
+      for(std::size_t x = 0; x < n; ++x)
       {
-        const std::size_t begin = first_offsets_[i], end = first_offsets_[i + 1];
-        if(begin == end) continue;
-        const float ai = co[2 * i], bi = co[2 * i + 1];
-        const bool i_on_a = ai < bi;
-        if(!i_on_a && !(bi < ai)) continue; // i on the bisector or in another component
-        const auto w1 = tol.range(ai); // for d(b,j)
-        const auto w2 = tol.range(bi); // for d(a,j)
-        const float lo1 = float(w1.first), hi1 = float(w1.second);
-        const float lo2 = float(w2.first), hi2 = float(w2.second);
-        for(std::size_t k = begin; k < end; ++k)
-        {
-          const std::uint32_t j = partners_[k];
-          const float aj = co[2 * j], bj = co[2 * j + 1];
-          if(!((bj >= lo1) & (bj <= hi1) & (aj >= lo2) & (aj <= hi2)))
-            continue;
-          // (p, q) = (i, j) if i is on a's side, (j, i) otherwise; j must be
-          // strictly on the other side
-          if(i_on_a ? !(bj < aj) : !(aj < bj))
-            continue;
-          const std::size_t p = i_on_a ? i : j, q = i_on_a ? j : i;
-          if(tol(co[2 * p], co[2 * q + 1]) && tol(co[2 * p + 1], co[2 * q]))
-            test_at_m(p, q);
-        }
+        const float ax = dA[x], bx = dB[x];
+        co[2 * x] = ax; co[2 * x + 1] = bx;
+        // Distance_tolerance::range() in single precision, with a slack of
+        // 1e-5 that covers the rounding (a window only has to be conservative);
+        // NaN bounds (infinite distances) reject everything, as the exact test does
+        const float sa = 1e-5f * (ax + floor) + 1e-30f, sb = 1e-5f * (bx + floor) + 1e-30f;
+        win[4 * x] = (std::min)(ax * (1.f - eps), ax - floor) - sa;
+        win[4 * x + 1] = (std::max)(ax * inv, ax + floor) + sa;
+        win[4 * x + 2] = (std::min)(bx * (1.f - eps), bx - floor) - sb;
+        win[4 * x + 3] = (std::max)(bx * inv, bx + floor) + sb;
+      }
+      const std::size_t np = pair_samples_.size() / 2;
+      std::vector<std::uint32_t>& hits = sc.hits;
+      hits.resize(np + 1);
+      std::size_t nh = 0;
+      const std::uint32_t* ps = pair_samples_.data();
+      for(std::size_t k = 0; k < np; ++k)
+      {
+        const std::uint32_t i = ps[2 * k], j = ps[2 * k + 1];
+        const float aj = co[2 * j], bj = co[2 * j + 1];
+        const float* w = win + 4 * std::size_t(i);
+        hits[nh] = std::uint32_t(k);
+        nh += std::size_t((bj >= w[0]) & (bj <= w[1]) & (aj >= w[2]) & (aj <= w[3]));
+      }
+      for(std::size_t h = 0; h < nh; ++h)
+      {
+        const std::uint32_t i = ps[2 * std::size_t(hits[h])], j = ps[2 * std::size_t(hits[h]) + 1];
+        const float ai = co[2 * i], bi = co[2 * i + 1], aj = co[2 * j], bj = co[2 * j + 1];
+        // (p, q) = (i, j) if i is strictly on a's side and j strictly on b's
+        // side, (j, i) in the opposite case
+        std::size_t p, q;
+        if(ai < bi && bj < aj) { p = i; q = j; }
+        else if(bi < ai && aj < bj) { p = j; q = i; }
+        else continue;
+        if(tol(co[2 * p], co[2 * q + 1]) && tol(co[2 * p + 1], co[2 * q]))
+          test_at_m(p, q);
       }
     }
     else
@@ -600,14 +723,15 @@ private:
   }
 
   // Axial-sym filter on the kept pairs: {p,q} stays if at least eps_AXS of
-  // the kept pairs {s,t} (itself included) have d(s,p) ~ d(t,q) and
-  // d(s,q) ~ d(t,p). For a pair {p,q}, the distances d(., p) and d(., q) are
-  // two contiguous rows of the transposed sample matrix. The count of a pair
-  // stops as soon as its verdict is certain, which gives the verdict of a full
-  // count. To reach it sooner, the pairs {s,t} are visited in two phases: the
-  // first few in canonical order, counted for every pair; then the others,
-  // least "popular" first (fewest agreements in the first phase): they
-  // disagree with most pairs and settle the failing ones early.
+  // the compared pairs {s,t} (all kept pairs or an evenly spread sample of
+  // them; itself included) have d(s,p) ~ d(t,q) and d(s,q) ~ d(t,p). The
+  // count of a pair stops as soon as its verdict is certain, which gives the
+  // verdict of the full count. The compared pairs are visited least
+  // "popular" first (fewest agreements with the first 32 compared pairs):
+  // they disagree with most pairs and settle the failing ones (most) early.
+  // They are taken eight at a time by all undecided pairs together, so that
+  // their 16 rows of the sample matrix stay in cache while the pairs' columns
+  // (in a spatially coherent order) are read.
   CGAL_IRS_VOTING_STAGE void apply_axial(Scratch& sc) const
   {
     const Distance_tolerance& tol = s_.settings.tolerance;
@@ -627,85 +751,102 @@ private:
       ss[l] = std::uint32_t(sc.candidates[sc.kept[l]].p);
       ts[l] = std::uint32_t(sc.candidates[sc.kept[l]].q);
     }
-    auto row = [&](std::uint32_t x) { return dss_t_.data() + std::size_t(x) * n; };
+    // d(s, x) = rows_[s * n + rank_[x]]: the rows of the compared samples,
+    // read at the columns of the pairs' samples
+    auto row = [&](std::uint32_t s) { return rows_.data() + std::size_t(s) * n; };
+    std::vector<std::uint32_t>& rp = sc.rp;
+    std::vector<std::uint32_t>& rq = sc.rq;
+    rp.resize(ne);
+    rq.resize(ne);
+    for(std::size_t k = 0; k < ne; ++k) { rp[k] = rank_[ss[k]]; rq[k] = rank_[ts[k]]; }
+    auto agree = [&](std::size_t k, std::uint32_t s, std::uint32_t t) {
+      const float* rs = row(s);
+      const float* rt = row(t);
+      return std::uint32_t(tol(rs[rp[k]], rt[rq[k]]) & tol(rs[rq[k]], rt[rp[k]]));
+    };
 
-    // phase 1: the first pairs {s,t}, for every pair {p,q}
+    // popularity of each compared pair: its agreements with the first 32
+    // compared pairs (the relation is symmetric up to the asymmetry of D)
     const std::size_t first = (std::min)(nc, std::size_t(32));
-    std::vector<std::uint32_t>& cs = sc.cs;
-    std::vector<std::uint32_t>& ct = sc.ct;
-    cs.resize(nc);
-    ct.resize(nc);
-    for(std::size_t i = 0; i < nc; ++i) { cs[i] = ss[sc.compared[i]]; ct[i] = ts[sc.compared[i]]; }
     std::vector<std::uint32_t>& count = sc.counts;
-    count.assign(ne, 0);
-    for(std::size_t k = 0; k < ne; ++k)
+    count.assign(nc, 0);
+    for(std::size_t i = 0; i < nc; ++i)
     {
-      const float* cp = row(ss[k]);
-      const float* cq = row(ts[k]);
       std::uint32_t c = 0;
       for(std::size_t l = 0; l < first; ++l)
-        c += std::uint32_t(tol(cp[cs[l]], cq[ct[l]]) & tol(cq[cs[l]], cp[ct[l]]));
-      count[k] = c;
+        c += agree(sc.compared[i], ss[sc.compared[l]], ts[sc.compared[l]]);
+      count[i] = c;
     }
-    // phase 2: the other compared pairs, least popular first (popularity of a
-    // compared pair: its own phase-1 count)
+    // the compared pairs are visited least popular first: they disagree with
+    // most pairs and settle the failing ones (most) early
     std::vector<std::uint32_t>& order = sc.order;
-    order.resize(nc - first);
-    for(std::size_t i = first; i < nc; ++i) order[i - first] = std::uint32_t(i);
+    order.resize(nc);
+    for(std::size_t i = 0; i < nc; ++i) order[i] = std::uint32_t(i);
     std::stable_sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y)
-                     { return count[sc.compared[x]] < count[sc.compared[y]]; });
+                     { return count[x] < count[y]; });
     std::vector<std::uint32_t>& os = sc.os;
     std::vector<std::uint32_t>& ot = sc.ot;
-    os.resize(order.size());
-    ot.resize(order.size());
-    for(std::size_t i = 0; i < order.size(); ++i) { os[i] = cs[order[i]]; ot[i] = ct[order[i]]; }
+    os.resize(nc);
+    ot.resize(nc);
+    for(std::size_t i = 0; i < nc; ++i) { os[i] = ss[sc.compared[order[i]]]; ot[i] = ts[sc.compared[order[i]]]; }
 
-    const std::size_t rest = order.size();
-    const std::size_t chunk = 16;
+    // All undecided pairs take the next few compared pairs together (their
+    // rows stay in cache), in the order of their first sample's column; a
+    // pair leaves as soon as its verdict is certain, which is the verdict of
+    // the full count.
+    std::vector<std::uint32_t>& active = sc.active;
+    active.resize(ne);
+    for(std::size_t k = 0; k < ne; ++k) active[k] = std::uint32_t(k);
+    std::sort(active.begin(), active.end(), [&](std::uint32_t x, std::uint32_t y)
+              { return rp[x] < rp[y] || (rp[x] == rp[y] && x < y); });
+    std::vector<std::uint32_t>& c = sc.axial_counts;
+    c.assign(ne, 0);
+    std::vector<unsigned char>& pass = sc.axial_pass;
+    pass.assign(ne, needed == 0 ? 1 : 0);
+    if(needed == 0) active.clear();
+    const std::size_t chunk = 8;
+    for(std::size_t l0 = 0; l0 < nc && !active.empty(); l0 += chunk)
+    {
+      const std::size_t l1 = (std::min)(nc, l0 + chunk);
+      std::size_t out = 0;
+      for(std::size_t idx = 0; idx < active.size(); ++idx)
+      {
+        const std::uint32_t k = active[idx];
+        std::uint32_t ck = c[k];
+        for(std::size_t l = l0; l < l1; ++l)
+          ck += agree(k, os[l], ot[l]);
+        c[k] = ck;
+#ifdef CGAL_IRS_VOTING_STATS
+        sc.stat_axial_checks += l1 - l0;
+#endif
+        if(ck >= needed) pass[k] = 1;
+        else if(ck + (nc - l1) >= needed) active[out++] = k; // still undecided
+      }
+      active.resize(out);
+    }
+#ifdef CGAL_IRS_VOTING_STATS
+    sc.stat_axial_pairs += ne;
+    sc.stat_axial_e2 += ne * nc;
+#endif
     std::size_t out = 0;
     for(std::size_t k = 0; k < ne; ++k)
-    {
-      std::size_t c = count[k];
-      bool pass = c >= needed;
-      if(!pass && c + rest >= needed)
-      {
-        const float* cp = row(ss[k]);
-        const float* cq = row(ts[k]);
-        for(std::size_t l0 = 0; l0 < rest; l0 += chunk)
-        {
-          const std::size_t l1 = (std::min)(rest, l0 + chunk);
-          for(std::size_t l = l0; l < l1; ++l)
-            c += std::size_t(tol(cp[os[l]], cq[ot[l]]) & tol(cq[os[l]], cp[ot[l]]));
-#ifdef CGAL_IRS_VOTING_STATS
-          sc.stat_axial_checks += l1 - l0;
-#endif
-          if(c >= needed) { pass = true; break; }
-          if(c + (rest - l1) < needed) break;
-        }
-      }
-#ifdef CGAL_IRS_VOTING_STATS
-      sc.stat_axial_checks += first;
-      sc.stat_axial_pairs += 1;
-      sc.stat_axial_e2 += nc;
-#endif
-      if(pass)
+      if(pass[k])
         sc.kept[out++] = sc.kept[k];
-    }
     sc.kept.resize(out);
   }
 
   const Voting_setup& s_;
   std::size_t words_per_row_ = 0;
   std::vector<std::uint64_t> similar_;
-  std::vector<std::size_t> first_offsets_;
-  std::vector<std::uint32_t> partners_;
+  std::vector<std::uint32_t> pair_samples_; // the similar pairs (i, j), flat
   bool use_pair_scan_ = true;
   bool parallel_ = false;
   std::vector<std::size_t> neighbor_offsets_;
   std::vector<std::uint32_t> neighbors_;
   std::vector<std::size_t> block_offsets_, block_vertices_, block_adj_offsets_, block_adj_;
-  std::vector<float> block_bound_; // L(x, B), sample-major
-  std::vector<float> dss_t_;       // dss transposed
+  std::vector<float> block_info_;  // (d(x, first vertex of B), L(x, B)), sample-major
+  std::vector<float> rows_;        // dss, columns in the order rank_
+  std::vector<std::uint32_t> rank_; // position of each sample in a spatially coherent order
 };
 
 } // namespace internal

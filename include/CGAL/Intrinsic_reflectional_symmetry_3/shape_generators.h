@@ -37,6 +37,9 @@
 ///   planes are mirror planes), its positions made exactly symmetric.
 ///   Measured triangle angles: within [28, 102] degrees for 600 to 4K
 ///   vertices, at least 99.7 % of them within [30, 100].
+/// - stick figure: its left-right (x = 0) map is exact by construction (the
+///   right half, body and limbs joined by corefinement, is reflected); its
+///   front-back map is by nearest vertex, as for the two snowmen below.
 /// - two snowmen: the tube is joined by corefinement and the junction is
 ///   remeshed, so the mirror maps are computed as "nearest vertex to the
 ///   reflected point" (CGAL's `Orthogonal_k_neighbor_search`), kept only when
@@ -506,6 +509,105 @@ Generated_shape<TriangleMesh> generate_bent_capsule(std::size_t target_number_of
     if(std::abs(straight[v].x()) <= 0.5 * e) ends.axis.push_back(v);
   syms.push_back(ends);
   syms.push_back(plane_symmetry("z=0 plane (bending plane)", coordinate_plane(2), s.mirror[1], s.soup.points, e));
+  return make_shape<TriangleMesh>(s.soup, std::move(syms), e);
+}
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// A stick figure with limbs, the test shape of part repair: a body (capsule
+/// of axis z, radius 0.5, cylinder |z| <= 0.9), two arms (capsules of axis x,
+/// radius 0.16, cap centres at |x| = 0.3 and 1.9, height z = 0.6) and two
+/// legs (capsules of axis z, radius 0.18, at x = +-0.27, cap centres at
+/// z = -1.0 and -2.8), about `target_number_of_vertices` vertices. The arm
+/// tips are the vertices of extreme x, the feet those of lowest z.
+///
+/// Known symmetries, in this order:
+/// - "x=0 plane (left-right)": exact. The right half (body half, right arm
+///   and right leg joined by corefinement, junctions remeshed away from the
+///   plane) is reflected across x = 0, so mirror coordinates are exact and
+///   the map is known combinatorially; vertices on the plane are fixed.
+/// - "y=0 plane (front-back)": by mutual nearest vertex within half a mean
+///   edge length (the remeshed junctions are not exactly symmetric in y).
+template <typename TriangleMesh>
+Generated_shape<TriangleMesh> generate_stick_figure(std::size_t target_number_of_vertices = 3000)
+{
+  using namespace internal::shapes;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  check_target(target_number_of_vertices);
+  const double r_body = 0.5, hl_body = 0.9, r_arm = 0.16, r_leg = 0.18;
+  const double x_arm0 = 0.3, x_arm1 = 1.9, z_arm = 0.6, x_leg = 0.27, z_leg0 = -2.8, z_leg1 = -1.0;
+  const double hl_arm = 0.5 * (x_arm1 - x_arm0), hl_leg = 0.5 * (z_leg1 - z_leg0);
+  const double area = capsule_area(r_body, hl_body) + 2 * capsule_area(r_arm, hl_arm) + 2 * capsule_area(r_leg, hl_leg);
+  const double h = (std::min)(edge_length_for(area, target_number_of_vertices),
+                              pi * r_arm / 4.); // at least 8 edges around a limb
+
+  const Soup body = capsule_soup(r_body, hl_body, h).soup;
+  Soup limbs = capsule_soup(r_arm, hl_arm, h).soup; // right arm: axis z -> x by a rotation
+  for(Point& p : limbs.points) p = Point(p.z() + 0.5 * (x_arm0 + x_arm1), p.y(), -p.x() + z_arm);
+  {
+    const Soup leg = capsule_soup(r_leg, hl_leg, h).soup;
+    const std::size_t off = limbs.points.size();
+    for(const Point& p : leg.points) limbs.points.push_back(Point(p.x() + x_leg, p.y(), p.z() + 0.5 * (z_leg0 + z_leg1)));
+    for(const Triangle& t : leg.triangles) limbs.triangles.push_back(Triangle{{t[0] + off, t[1] + off, t[2] + off}});
+  }
+  Mesh m1 = soup_to_surface_mesh(body), m2 = soup_to_surface_mesh(limbs), m;
+  auto crease = m.add_property_map<Mesh::Edge_index, bool>("e:irs_crease", false).first;
+  if(!PMP::corefine_and_compute_union(m1, m2, m, PMP::parameters::default_values(),
+                                      PMP::parameters::default_values(),
+                                      PMP::parameters::edge_is_constrained_map(crease)))
+    throw std::logic_error("shape generator: union of body and limbs failed");
+
+  // remesh a few rings around the junctions, never touching the plane x = 0
+  // (its vertices must keep their exact zero coordinate)
+  auto selected = m.add_property_map<Mesh::Face_index, bool>("f:irs_selected", false).first;
+  std::vector<Mesh::Face_index> junction;
+  for(Mesh::Edge_index e : edges(m))
+    if(get(crease, e))
+      for(Mesh::Halfedge_index hh : {halfedge(e, m), opposite(halfedge(e, m), m)})
+        if(!get(selected, face(hh, m))) { put(selected, face(hh, m), true); junction.push_back(face(hh, m)); }
+  CGAL::expand_face_selection(std::vector<Mesh::Face_index>(junction), m, 2, selected, std::back_inserter(junction));
+  std::vector<Mesh::Face_index> away;
+  for(Mesh::Face_index f : junction) {
+    bool far = true;
+    for(Mesh::Vertex_index v : vertices_around_face(halfedge(f, m), m)) far = far && m.point(v).x() > 0.5 * h;
+    if(far) away.push_back(f);
+  }
+  PMP::isotropic_remeshing(away, h, m, PMP::parameters::number_of_iterations(10).number_of_relaxation_steps(3));
+  m.collect_garbage();
+
+  // the right half (x >= 0), its border exactly on the plane, reflected
+  const Soup whole = surface_mesh_to_soup(m);
+  Soup half;
+  std::vector<std::size_t> id(whole.points.size(), std::size_t(-1));
+  std::vector<unsigned> on_planes;
+  for(const Triangle& t : whole.triangles) {
+    if(whole.points[t[0]].x() < 0. || whole.points[t[1]].x() < 0. || whole.points[t[2]].x() < 0.) continue;
+    Triangle u;
+    for(int i = 0; i < 3; ++i) {
+      if(id[t[i]] == std::size_t(-1)) {
+        id[t[i]] = half.points.size();
+        half.points.push_back(whole.points[t[i]]);
+        on_planes.push_back(whole.points[t[i]].x() == 0. ? 1u : 0u);
+      }
+      u[i] = id[t[i]];
+    }
+    if(on_planes[u[0]] && on_planes[u[1]] && on_planes[u[2]])
+      throw std::logic_error("shape generator: a triangle lies in the mirror plane");
+    half.triangles.push_back(u);
+  }
+  Symmetric_soup s = reflect_patch(half, on_planes, 1u);
+  if(!PMP::is_polygon_soup_a_polygon_mesh(s.soup.triangles))
+    throw std::logic_error("shape generator: the reflected half is not a 2-manifold");
+  {
+    Mesh check = soup_to_surface_mesh(s.soup);
+    if(!CGAL::is_closed(check) || num_vertices(check) != s.soup.points.size())
+      throw std::logic_error("shape generator: the stick figure is not closed");
+  }
+  const double e = mean_edge_length(s.soup);
+  std::vector<Known_symmetry> syms;
+  syms.push_back(plane_symmetry("x=0 plane (left-right)", coordinate_plane(0), s.mirror[0], s.soup.points, e));
+  syms.push_back(plane_symmetry("y=0 plane (front-back)", coordinate_plane(1),
+                                mirror_by_nearest_vertex(s.soup.points, [](const Point& p) { return flip(p, 2u); }, 0.5 * e),
+                                s.soup.points, e));
   return make_shape<TriangleMesh>(s.soup, std::move(syms), e);
 }
 

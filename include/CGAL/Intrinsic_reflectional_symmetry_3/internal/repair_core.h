@@ -1,0 +1,650 @@
+// Copyright (c) 2026 The Intrinsic_reflectional_symmetry_3 project.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+// Author(s)     : The Intrinsic_reflectional_symmetry_3 developers
+
+#ifndef CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_INTERNAL_REPAIR_CORE_H
+#define CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_INTERNAL_REPAIR_CORE_H
+
+#include <CGAL/disable_warnings.h>
+
+// The steps of repair_missing_parts() (part_repair.h) on an indexed soup:
+// mirror plane, missing-part detection, placement (reflection + ICP),
+// overlap removal, stitching and seam fairing. No API promise.
+
+#include <CGAL/Intrinsic_reflectional_symmetry_3/errors.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/repair_mesh.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/repair_protocol.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Polygon_mesh_processing/fair.h>
+#include <CGAL/Polygon_mesh_processing/refine.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/linear_least_squares_fitting_3.h>
+#include <CGAL/property_map.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Intrinsic_reflectional_symmetry_3 {
+namespace internal {
+
+struct Repair_settings
+{
+  double threshold = 0.02;          // tau, as a fraction of the bounding-box diagonal
+  double minimum_part_area = 0.005; // fraction of the total area
+  unsigned icp_iterations = 30;
+};
+
+struct Repair_core_result
+{
+  Repair_soup mesh;
+  std::array<double, 4> plane = {{0., 0., 0., 0.}};
+  std::vector<std::size_t> part_sizes;
+  std::vector<double> icp_rms;
+  std::vector<bool> faired;
+};
+
+inline std::string repair_failure(const std::string& why) { return "part repair is not possible: " + why; }
+
+inline Repair_point reflect_point(const Repair_point& p, const Repair_vector& n, const Repair_point& c)
+{
+  return p - 2. * ((p - c) * n) * n;
+}
+
+/// multi-source edge-graph Dijkstra
+inline std::vector<double> soup_dijkstra_multi(const Repair_soup& s, const std::vector<std::vector<std::size_t> >& nb,
+                                               const std::vector<std::size_t>& sources)
+{
+  std::vector<double> d(s.points.size(), std::numeric_limits<double>::infinity());
+  typedef std::pair<double, std::size_t> Item;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item> > q;
+  for(std::size_t v : sources) { d[v] = 0.; q.push(Item(0., v)); }
+  while(!q.empty())
+  {
+    const Item it = q.top();
+    q.pop();
+    if(it.first > d[it.second]) continue;
+    for(std::size_t w : nb[it.second])
+    {
+      const double dw = it.first + std::sqrt(CGAL::squared_distance(s.points[it.second], s.points[w]));
+      if(dw < d[w]) { d[w] = dw; q.push(Item(dw, w)); }
+    }
+  }
+  return d;
+}
+
+/// least-squares plane (unit normal `n`, point `c`) of points
+inline void fit_plane(const std::vector<Repair_point>& pts, Repair_vector& n, Repair_point& c)
+{
+  Repair_plane plane;
+  CGAL::linear_least_squares_fitting_3(pts.begin(), pts.end(), plane, c, CGAL::Dimension_tag<0>(),
+                                       Repair_kernel(), CGAL::Default_diagonalize_traits<double, 3>());
+  n = plane.orthogonal_vector();
+  n = n / std::sqrt(n.squared_length());
+}
+
+/// Rigid ICP (point to nearest vertex, trimmed): returns T with T(src) ~ target
+/// surface. Rigid fit by Eigen's umeyama(), neighbours by CGAL's kd-tree.
+inline Eigen::Matrix4d rigid_icp(const std::vector<Repair_point>& src, const std::vector<Repair_point>& target,
+                                 double max_pair_distance, unsigned iterations, double& rms, double& rms_start)
+{
+  typedef CGAL::Search_traits_3<Repair_kernel>                                   Traits_base;
+  typedef CGAL::Pointer_property_map<Repair_point>::const_type                   Point_map;
+  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Traits_base>       Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits>                             Search;
+  typedef Search::Tree                                                           Tree;
+  typedef Search::Distance                                                       Distance;
+
+  Eigen::Matrix4d T = Eigen::Matrix4d::Identity();
+  rms = rms_start = std::numeric_limits<double>::infinity();
+  if(src.size() < 3 || target.size() < 3) return T;
+  Point_map ppmap = CGAL::make_property_map(target);
+  std::vector<std::size_t> ids(target.size());
+  for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
+  Tree tree(ids.begin(), ids.end(), Tree::Splitter(), Traits(ppmap));
+  tree.build();
+  Distance distance(ppmap);
+
+  for(unsigned it = 0; it < iterations; ++it)
+  {
+    std::vector<std::pair<double, std::pair<Eigen::Vector3d, Eigen::Vector3d> > > pairs;
+    for(const Repair_point& p0 : src)
+    {
+      const Eigen::Vector3d p = (T * Eigen::Vector4d(p0.x(), p0.y(), p0.z(), 1.)).head<3>();
+      Search search(tree, Repair_point(p.x(), p.y(), p.z()), 1, 0, true, distance);
+      const auto nn = search.begin();
+      if(nn == search.end()) continue;
+      const double d = std::sqrt(nn->second);
+      if(d > max_pair_distance) continue;
+      const Repair_point& q = target[nn->first];
+      pairs.push_back(std::make_pair(d, std::make_pair(p, Eigen::Vector3d(q.x(), q.y(), q.z()))));
+    }
+    if(pairs.size() < 3) break;
+    // trimmed ICP: the 80 % closest pairs (the ring's far side may face a cap or nothing)
+    std::sort(pairs.begin(), pairs.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    const std::size_t k = (std::max)(std::size_t(3), pairs.size() * 4 / 5);
+    Eigen::Matrix3Xd A(3, k), B(3, k);
+    double sq = 0.;
+    for(std::size_t i = 0; i < k; ++i)
+    {
+      A.col(Eigen::Index(i)) = pairs[i].second.first;
+      B.col(Eigen::Index(i)) = pairs[i].second.second;
+      sq += pairs[i].first * pairs[i].first;
+    }
+    rms = std::sqrt(sq / double(k));
+    if(it == 0) rms_start = rms;
+    const Eigen::Matrix4d step = Eigen::umeyama(A, B, false);
+    T = step * T;
+    if((step - Eigen::Matrix4d::Identity()).norm() < 1e-9) break;
+  }
+  return T;
+}
+
+inline Repair_point apply(const Eigen::Matrix4d& T, const Repair_point& p)
+{
+  const Eigen::Vector3d q = (T * Eigen::Vector4d(p.x(), p.y(), p.z(), 1.)).head<3>();
+  return Repair_point(q.x(), q.y(), q.z());
+}
+
+/// vertices not in the largest (by area) component of the complement of `in` are added to `in`
+inline void fill_enclosed(const std::vector<std::vector<std::size_t> >& nb, const std::vector<double>& area,
+                          std::vector<char>& in)
+{
+  std::vector<char> out(in.size());
+  for(std::size_t v = 0; v < in.size(); ++v) out[v] = !in[v];
+  std::vector<std::ptrdiff_t> label;
+  const std::size_t nc = label_components(nb, out, label);
+  if(nc <= 1) return;
+  std::vector<double> a(nc, 0.);
+  for(std::size_t v = 0; v < in.size(); ++v) if(label[v] >= 0) a[std::size_t(label[v])] += area[v];
+  const std::ptrdiff_t big = std::ptrdiff_t(std::max_element(a.begin(), a.end()) - a.begin());
+  for(std::size_t v = 0; v < in.size(); ++v) if(label[v] >= 0 && label[v] != big) in[v] = 1;
+}
+
+/// The triangles of a vertex set made a disk-like face region: the largest
+/// edge-connected component of its triangles, its holes filled, and the
+/// faces around pinched border vertices added, until its border is simple.
+/// Returns the region's triangles (indices into s.triangles); empty on failure.
+inline std::vector<std::size_t> clean_part_region(const Repair_soup& s, const std::vector<char>& in_vertex)
+{
+  const std::size_t nf = s.triangles.size();
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> > edge_faces;
+  std::vector<std::vector<std::size_t> > vertex_faces(s.points.size());
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int i = 0; i < 3; ++i)
+    {
+      std::size_t a = s.triangles[f][std::size_t(i)], b = s.triangles[f][std::size_t((i + 1) % 3)];
+      if(a > b) std::swap(a, b);
+      edge_faces[std::make_pair(a, b)].push_back(f);
+      vertex_faces[s.triangles[f][std::size_t(i)]].push_back(f);
+    }
+  std::vector<std::vector<std::size_t> > fnb(nf);
+  for(const auto& ef : edge_faces)
+    if(ef.second.size() == 2) { fnb[ef.second[0]].push_back(ef.second[1]); fnb[ef.second[1]].push_back(ef.second[0]); }
+  std::vector<char> in(nf, 0);
+  for(std::size_t f = 0; f < nf; ++f)
+    in[f] = in_vertex[s.triangles[f][0]] && in_vertex[s.triangles[f][1]] && in_vertex[s.triangles[f][2]];
+  auto keep_largest = [&](std::vector<char>& set, bool complement) {
+    std::vector<char> sel(nf);
+    for(std::size_t f = 0; f < nf; ++f) sel[f] = complement ? !set[f] : set[f];
+    std::vector<std::ptrdiff_t> lab;
+    const std::size_t nc = label_components(fnb, sel, lab);
+    if(nc == 0) return;
+    std::vector<std::size_t> size(nc, 0);
+    for(std::size_t f = 0; f < nf; ++f) if(lab[f] >= 0) ++size[std::size_t(lab[f])];
+    const std::ptrdiff_t big = std::ptrdiff_t(std::max_element(size.begin(), size.end()) - size.begin());
+    for(std::size_t f = 0; f < nf; ++f)
+      if(lab[f] >= 0 && lab[f] != big) set[f] = complement ? 1 : 0;
+  };
+  for(int round = 0; round < 20; ++round)
+  {
+    keep_largest(in, false);
+    keep_largest(in, true);
+    // pinched vertices: more than one border edge pair, i.e. more than two border edges around them
+    std::vector<int> border_edges(s.points.size(), 0);
+    for(const auto& ef : edge_faces)
+    {
+      int k = 0;
+      for(std::size_t f : ef.second) k += in[f] ? 1 : 0;
+      if(k == 1) { ++border_edges[ef.first.first]; ++border_edges[ef.first.second]; }
+    }
+    bool changed = false;
+    for(std::size_t v = 0; v < s.points.size(); ++v)
+      if(border_edges[v] > 2)
+        for(std::size_t f : vertex_faces[v]) if(!in[f]) { in[f] = 1; changed = true; }
+    if(!changed) break;
+  }
+  std::vector<std::size_t> out;
+  for(std::size_t f = 0; f < nf; ++f) if(in[f]) out.push_back(f);
+  return out;
+}
+
+/// Triangles bridging two border loops facing each other (`l1`, `l2` in
+/// border order; the bridge runs along l1 forwards and l2 backwards, which is
+/// what consistent orientation requires), advancing on the loop whose next
+/// vertex comes first by normalised arc length. Written by hand: CGAL fills a
+/// single hole, not the gap between two loops.
+inline void zip_loops(const std::vector<Repair_point>& pts, const std::vector<std::size_t>& l1,
+                      const std::vector<std::size_t>& l2in, std::vector<Repair_triangle>& out)
+{
+  // l2 reversed, starting at its vertex nearest to l1[0]
+  std::size_t j0 = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for(std::size_t j = 0; j < l2in.size(); ++j)
+  {
+    const double d = CGAL::squared_distance(pts[l1[0]], pts[l2in[j]]);
+    if(d < best) { best = d; j0 = j; }
+  }
+  std::vector<std::size_t> l2;
+  for(std::size_t j = 0; j < l2in.size(); ++j) l2.push_back(l2in[(j0 + l2in.size() - j) % l2in.size()]);
+  auto params = [&pts](const std::vector<std::size_t>& l) {
+    std::vector<double> t(l.size() + 1, 0.);
+    for(std::size_t i = 0; i < l.size(); ++i)
+      t[i + 1] = t[i] + std::sqrt(CGAL::squared_distance(pts[l[i]], pts[l[(i + 1) % l.size()]]));
+    for(double& x : t) x /= t.back();
+    return t;
+  };
+  const std::vector<double> t1 = params(l1), t2 = params(l2);
+  std::size_t i = 0, j = 0;
+  const std::size_t n1 = l1.size(), n2 = l2.size();
+  while(i < n1 || j < n2)
+  {
+    if(j == n2 || (i < n1 && t1[i + 1] <= t2[j + 1]))
+    {
+      out.push_back(Repair_triangle{{l1[i], l1[(i + 1) % n1], l2[j % n2]}});
+      ++i;
+    }
+    else
+    {
+      out.push_back(Repair_triangle{{l2[(j + 1) % n2], l2[j], l1[i % n1]}});
+      ++j;
+    }
+  }
+}
+
+/// the whole repair on a closed soup; `partner[v]` = mirror vertex or -1;
+/// `axis` = the IRSA curve's vertices
+inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<std::ptrdiff_t>& partner,
+                                      const std::vector<std::size_t>& axis_in, const Repair_settings& rs)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  Repair_core_result result;
+  const std::size_t n = s.points.size();
+  if(partner.size() != n)
+    throw Input_error(Input_problem::invalid_parameter, "part repair: the partner map does not match the mesh");
+  const std::vector<std::vector<std::size_t> > nb = soup_neighbours(s);
+  const double e = soup_mean_edge_length(s), diag = soup_bbox_diagonal(s.points);
+  const std::vector<double> area = soup_vertex_areas(s);
+  double total_area = 0.;
+  for(double a : area) total_area += a;
+  const double tau = (std::max)(rs.threshold * diag, 1.5 * e);
+
+  // 1. The mirror plane: best fit of the IRSA curve (paper Sec. 4.2), or of
+  //    the fixed points and pair midpoints of the map when no curve is given.
+  std::vector<std::size_t> axis;
+  for(std::size_t v : axis_in) if(v < n) axis.push_back(v);
+  std::vector<Repair_point> ap;
+  for(std::size_t v : axis) ap.push_back(s.points[v]);
+  if(ap.size() < 3)
+  {
+    axis.clear();
+    ap.clear();
+    for(std::size_t v = 0; v < n; ++v)
+      if(partner[v] >= 0 && std::size_t(partner[v]) < n)
+      {
+        if(std::size_t(partner[v]) == v) axis.push_back(v);
+        ap.push_back(CGAL::midpoint(s.points[v], s.points[std::size_t(partner[v])]));
+      }
+  }
+  if(ap.size() < 3) throw Input_error(Input_problem::invalid_parameter, repair_failure("no symmetry axis and no mirror pairs"));
+  Repair_vector pn;
+  Repair_point pc;
+  fit_plane(ap, pn, pc);
+  result.plane = {{pn.x(), pn.y(), pn.z(), -(pn * (pc - CGAL::ORIGIN))}};
+  if(axis.empty()) // geodesic distances to the axis need sources: the vertices nearest the plane
+    for(std::size_t v = 0; v < n; ++v)
+      if(std::abs((s.points[v] - pc) * pn) <= 0.5 * e) axis.push_back(v);
+  if(axis.empty()) throw Input_error(Input_problem::invalid_parameter, repair_failure("the mirror plane misses the mesh"));
+
+  // 2. Detection. A reflection preserves the geodesic distance g to its
+  //    axis, so g(v) - g(partner(v)) > tau means the map collapsed v onto a
+  //    smaller counterpart (a limb mapped onto the cap of the missing one);
+  //    a vertex without partner is also orphan. Intrinsic, so a posed limb
+  //    whose counterpart exists is not taken for a missing one.
+  const std::vector<double> g = soup_dijkstra_multi(s, nb, axis);
+  std::vector<char> orphan(n, 0);
+  std::vector<double> excess(n, 0.);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    if(partner[v] < 0 || std::size_t(partner[v]) >= n) { orphan[v] = 1; excess[v] = -1.; continue; }
+    excess[v] = g[v] - g[std::size_t(partner[v])];
+    orphan[v] = excess[v] > tau;
+  }
+  fill_enclosed(nb, area, orphan);
+  std::vector<std::ptrdiff_t> label;
+  const std::size_t nc = label_components(nb, orphan, label);
+  std::vector<double> comp_area(nc, 0.), evidence(nc, 0.);
+  std::vector<std::vector<std::size_t> > comp(nc);
+  for(std::size_t v = 0; v < n; ++v)
+    if(label[v] >= 0)
+    {
+      const std::size_t c = std::size_t(label[v]);
+      comp[c].push_back(v);
+      comp_area[c] += area[v];
+      if(excess[v] > tau) evidence[c] += area[v];
+    }
+  Repair_surface surface = soup_to_surface(s);
+  typedef CGAL::AABB_face_graph_triangle_primitive<Repair_surface> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Repair_kernel, Primitive> > Tree;
+  Tree tree(faces(surface).first, faces(surface).second, surface);
+  tree.accelerate_distance_queries();
+  CGAL::Side_of_triangle_mesh<Repair_surface, Repair_kernel> inside(tree);
+  std::vector<std::size_t> parts;
+  for(std::size_t c = 0; c < nc; ++c)
+  {
+    if(comp_area[c] < rs.minimum_part_area * total_area) continue;
+    // An orphan part is missing on the other side when its reflection across
+    // the mirror plane lands mostly off the surface, outside the shape. This
+    // extrinsic check rejects what the map merely fails on (e.g. a head, whose
+    // reflection is the head itself); the intrinsic orphan test above rejects
+    // limbs that only have another pose on the other side.
+    double off = 0.;
+    for(std::size_t v : comp[c])
+    {
+      const Repair_point q = reflect_point(s.points[v], pn, pc);
+      if(inside(q) == CGAL::ON_UNBOUNDED_SIDE && std::sqrt(tree.squared_distance(q)) > tau) off += area[v];
+    }
+    // ... and when it lies on one side of the plane, well away from it (a
+    // region straddling the plane, like a turned head, is not a missing limb):
+    // the centroid's distance to the plane is at least 2.5 times the spread
+    double sw = 0., s1 = 0., s2 = 0.;
+    for(std::size_t v : comp[c])
+    {
+      const double d = (s.points[v] - pc) * pn;
+      sw += area[v];
+      s1 += area[v] * d;
+      s2 += area[v] * d * d;
+    }
+    const double mean_d = s1 / sw, spread = std::sqrt((std::max)(0., s2 / sw - mean_d * mean_d));
+    const bool one_sided = std::abs(mean_d) >= 2.5 * spread && std::abs(mean_d) > tau;
+    // ... and when it is away from the axis (a limb, not the middle of the shape)
+    double g_min = std::numeric_limits<double>::infinity();
+    for(std::size_t v : comp[c]) g_min = (std::min)(g_min, g[v]);
+    const bool missing = off >= 0.5 * comp_area[c] && one_sided && g_min >= 3. * tau;
+    if(missing) parts.push_back(c);
+  }
+  // each part as a disk-like region of triangles
+  std::vector<std::vector<std::size_t> > part_faces, part_vertices;
+  for(std::size_t c : parts)
+  {
+    std::vector<char> in_c(n, 0);
+    for(std::size_t v : comp[c]) in_c[v] = 1;
+    std::vector<std::size_t> F = clean_part_region(s, in_c), O;
+    std::vector<char> used(n, 0);
+    for(std::size_t f : F) for(std::size_t v : s.triangles[f]) used[v] = 1;
+    for(std::size_t v = 0; v < n; ++v) if(used[v]) O.push_back(v);
+    if(O.empty()) continue;
+    part_faces.push_back(F);
+    part_vertices.push_back(O);
+  }
+  std::vector<char> in_part(n, 0);
+  for(const auto& O : part_vertices) for(std::size_t v : O) in_part[v] = 1;
+  // ICP targets: not the parts, and not where the parts' vertices collapse in
+  // the map (the caps): a cap would pull a copy back along its limb's axis
+  std::vector<char> hub(n, 0);
+  for(const auto& O : part_vertices)
+    for(std::size_t v : O)
+      if(partner[v] >= 0 && std::size_t(partner[v]) < n)
+        for(std::size_t w : nb[std::size_t(partner[v])]) hub[w] = hub[std::size_t(partner[v])] = 1;
+  std::vector<Repair_point> target;
+  for(std::size_t v = 0; v < n; ++v) if(!in_part[v] && !hub[v]) target.push_back(s.points[v]);
+
+  // 3-5 with, for every part, the ICP result of the better start (attempt 0)
+  // or of the other one (attempt 1, tried when attempt 0 cannot be stitched cleanly)
+  const Repair_core_result detected = result;
+  auto build = [&](std::size_t attempt) -> Repair_core_result {
+  Repair_core_result result = detected;
+  // 3. Placement and overlap removal, per part.
+  std::vector<char> removed(n, 0), removed_face(s.triangles.size(), 0);
+  Repair_soup combined;
+  combined.points = s.points;
+  struct Placed { std::vector<std::size_t> zone; std::size_t first_new = 0, end_new = 0; };
+  std::vector<Placed> placed;
+  for(std::size_t k = 0; k < part_faces.size(); ++k)
+  {
+    const std::vector<std::size_t>& O = part_vertices[k];
+    Repair_soup part;
+    part.points = s.points;
+    for(std::size_t f : part_faces[k]) part.triangles.push_back(s.triangles[f]);
+    std::vector<std::vector<std::size_t> > loops;
+    if(!border_loops(part, loops) || loops.size() != 1)
+      throw Input_error(Input_problem::invalid_parameter,
+                        repair_failure("the base of a part to mirror is not one simple loop"), O.front());
+    const std::vector<std::size_t>& base = loops.front();
+
+    // ICP between the reflected collar (a band outside the part's base) and the other side
+    const std::vector<double> dO = soup_dijkstra_multi(s, nb, base);
+    std::vector<Repair_point> collar;
+    std::vector<std::size_t> collar_vertices(base.begin(), base.end());
+    for(std::size_t v = 0; v < n; ++v)
+      if(!in_part[v] && dO[v] > 0. && dO[v] <= 3. * tau) collar_vertices.push_back(v);
+    for(std::size_t v : collar_vertices) collar.push_back(reflect_point(s.points[v], pn, pc));
+    // initial position: the rigid motion taking the reflected collar onto the
+    // mirror partners of its vertices (the correspondence of the paper's
+    // Fig. 13c); the reflection alone is far off when the two sides are posed
+    // differently. Then ICP.
+    Eigen::Matrix4d T0 = Eigen::Matrix4d::Identity();
+    {
+      std::vector<std::size_t> with;
+      for(std::size_t i = 0; i < collar_vertices.size(); ++i)
+      {
+        const std::ptrdiff_t q = partner[collar_vertices[i]];
+        if(q >= 0 && std::size_t(q) < n && !in_part[std::size_t(q)]) with.push_back(i);
+      }
+      if(with.size() >= 6)
+      {
+        Eigen::Matrix3Xd A(3, Eigen::Index(with.size())), B(3, Eigen::Index(with.size()));
+        for(std::size_t j = 0; j < with.size(); ++j)
+        {
+          const Repair_point& a = collar[with[j]];
+          const Repair_point& b = s.points[std::size_t(partner[collar_vertices[with[j]]])];
+          A.col(Eigen::Index(j)) = Eigen::Vector3d(a.x(), a.y(), a.z());
+          B.col(Eigen::Index(j)) = Eigen::Vector3d(b.x(), b.y(), b.z());
+        }
+        T0 = Eigen::umeyama(A, B, false);
+      }
+    }
+    // both starts (reflection alone, and partners), the one ICP fits best
+    std::vector<std::pair<double, Eigen::Matrix4d> > fits;
+    for(const Eigen::Matrix4d& start : {Eigen::Matrix4d(Eigen::Matrix4d::Identity()), T0})
+    {
+      std::vector<Repair_point> collar0;
+      for(const Repair_point& p : collar) collar0.push_back(apply(start, p));
+      double r = 0., r0 = 0.;
+      const Eigen::Matrix4d Ti = rigid_icp(collar0, target, 2. * tau, rs.icp_iterations, r, r0) * start;
+      // ICP slides along limbs (a tube fits itself shifted): keep the start
+      // unless ICP improves the fit clearly
+      if(r0 <= 1.25 * r) fits.push_back(std::make_pair(r0, start));
+      else fits.push_back(std::make_pair(r, Ti));
+    }
+    // the plain reflection is the paper's start: kept unless the partners'
+    // start fits more than twice as well
+    if(fits[1].first < 0.5 * fits[0].first) std::swap(fits[0], fits[1]);
+    const double rms = fits[(std::min)(attempt, fits.size() - 1)].first;
+    const Eigen::Matrix4d T = fits[(std::min)(attempt, fits.size() - 1)].second;
+    result.icp_rms.push_back(rms);
+    auto place = [&](std::size_t v) { return apply(T, reflect_point(s.points[v], pn, pc)); };
+
+    // the zone the copy replaces: on the other side, beyond (a gap before)
+    // the copy's base ring and within its radius, around the ring's centre
+    std::vector<Repair_point> ring;
+    for(std::size_t v : base) ring.push_back(place(v));
+    Repair_vector rn;
+    Repair_point rc;
+    fit_plane(ring, rn, rc);
+    Repair_vector to_part = CGAL::NULL_VECTOR;
+    for(std::size_t v : O) to_part = to_part + (place(v) - rc);
+    if(to_part * rn < 0.) rn = -rn;
+    double rad = 0.;
+    for(const Repair_point& p : ring)
+    {
+      const Repair_vector d = p - rc;
+      rad = (std::max)(rad, std::sqrt((d - (d * rn) * rn).squared_length()));
+    }
+    const double gap = 0.5 * rad + 2. * e;
+    std::vector<char> cand(n, 0);
+    std::size_t seed = n;
+    double seed_d = std::numeric_limits<double>::infinity();
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      if(in_part[v] || removed[v]) continue;
+      const Repair_vector d = s.points[v] - rc;
+      const double along = d * rn, across = std::sqrt((d - along * rn).squared_length());
+      if(along > -gap && across < 1.5 * rad)
+      {
+        cand[v] = 1;
+        if(d.squared_length() < seed_d) { seed_d = d.squared_length(); seed = v; }
+      }
+    }
+    if(seed == n)
+      throw Input_error(Input_problem::invalid_parameter,
+                        repair_failure("the mirrored part does not meet the surface (no place to attach it)"), O.front());
+    std::vector<std::ptrdiff_t> cl;
+    label_components(nb, cand, cl);
+    std::vector<char> zone(n, 0);
+    for(std::size_t v = 0; v < n; ++v) zone[v] = (cl[v] == cl[seed]);
+    fill_enclosed(nb, area, zone);
+    // the faces removed: a disk-like region, so that its border is one simple loop
+    Placed pl;
+    for(std::size_t f : clean_part_region(s, zone))
+    {
+      if(removed_face[f]) continue;
+      for(std::size_t v : s.triangles[f])
+      {
+        if(in_part[v])
+          throw Input_error(Input_problem::invalid_parameter,
+                            repair_failure("the mirrored part overlaps the part it copies"), v);
+        pl.zone.push_back(v);
+        removed[v] = 1;
+      }
+      removed_face[f] = 1;
+    }
+    if(pl.zone.empty())
+      throw Input_error(Input_problem::invalid_parameter,
+                        repair_failure("the mirrored part does not meet the surface (no place to attach it)"), O.front());
+    // the copy: reflected, so its triangles are reversed
+    pl.first_new = combined.points.size();
+    std::vector<std::size_t> id(n, std::size_t(-1));
+    for(std::size_t v : O) { id[v] = combined.points.size(); combined.points.push_back(place(v)); }
+    pl.end_new = combined.points.size();
+    for(const Repair_triangle& t : part.triangles)
+      combined.triangles.push_back(Repair_triangle{{id[t[0]], id[t[2]], id[t[1]]}});
+    placed.push_back(pl);
+    result.part_sizes.push_back(O.size());
+  }
+  if(placed.empty()) { result.mesh = s; return result; }
+  const std::size_t copy_faces = combined.triangles.size();
+  for(std::size_t f = 0; f < s.triangles.size(); ++f)
+    if(!removed_face[f]) combined.triangles.push_back(s.triangles[f]);
+
+  // 4. Stitching: each placed copy's base loop to the loop its zone left.
+  std::vector<std::vector<std::size_t> > loops;
+  if(!border_loops(combined, loops) || loops.size() != 2 * placed.size())
+    throw Input_error(Input_problem::invalid_parameter,
+                      repair_failure("the cut around an attachment zone is not one simple loop"));
+  const std::size_t first_bridge = combined.triangles.size();
+  std::vector<std::size_t> seam;
+  for(const Placed& pl : placed)
+  {
+    std::vector<char> near_zone(combined.points.size(), 0);
+    for(std::size_t v : pl.zone) near_zone[v] = 1;
+    const std::vector<std::size_t>* l1 = nullptr;
+    const std::vector<std::size_t>* l2 = nullptr;
+    for(const auto& l : loops)
+    {
+      if(l.front() >= pl.first_new && l.front() < pl.end_new) l2 = &l;
+      else if(l.front() < n && near_zone[l.front()]) l1 = &l;
+    }
+    if(!l1 || !l2)
+      throw Input_error(Input_problem::invalid_parameter, repair_failure("could not pair the loops to stitch"));
+    zip_loops(combined.points, *l1, *l2, combined.triangles);
+    seam.insert(seam.end(), l1->begin(), l1->end());
+    seam.insert(seam.end(), l2->begin(), l2->end());
+  }
+  Repair_soup compacted;
+  std::vector<std::ptrdiff_t> old_to_new;
+  compacted = compact_soup(combined, &old_to_new);
+  if(!PMP::is_polygon_soup_a_polygon_mesh(compacted.triangles))
+    throw Input_error(Input_problem::invalid_parameter, repair_failure("the stitched surface is not a 2-manifold"));
+
+  // 5. Seam: refine the bridge triangles and fair them with a ring on each side
+  //    (CGAL's fairing: the harmonic-type interpolation the paper does with Poisson)
+  Repair_surface m = soup_to_surface(compacted);
+  std::vector<Repair_surface::Face_index> bridge;
+  for(std::size_t f = first_bridge; f < compacted.triangles.size(); ++f)
+    bridge.push_back(Repair_surface::Face_index(static_cast<Repair_surface::size_type>(f)));
+  std::vector<Repair_surface::Face_index> new_faces;
+  std::vector<Repair_surface::Vertex_index> fair_set;
+  PMP::refine(m, bridge, std::back_inserter(new_faces), std::back_inserter(fair_set));
+  std::vector<char> in_fair(num_vertices(m), 0);
+  for(auto v : fair_set) in_fair[std::size_t(v)] = 1;
+  for(std::size_t v : seam)
+  {
+    const std::ptrdiff_t w = old_to_new[v];
+    if(w >= 0 && !in_fair[std::size_t(w)]) { in_fair[std::size_t(w)] = 1; fair_set.push_back(Repair_surface::Vertex_index(static_cast<Repair_surface::size_type>(w))); }
+  }
+  const bool faired = PMP::fair(m, fair_set);
+  result.faired.assign(placed.size(), faired);
+  std::string defect = mesh_defect(m);
+  const std::size_t kept_end = first_bridge;
+  if(defect.empty() && self_intersects_new(m, [copy_faces, kept_end](Repair_surface::Face_index f) {
+       return std::size_t(f) < copy_faces || std::size_t(f) >= kept_end; }))
+    defect = "self-intersecting (a copied or stitched face crosses the surface)";
+  if(!defect.empty())
+    throw Input_error(Input_problem::invalid_parameter, repair_failure("the repaired surface would be " + defect));
+  Repair_soup r;
+  r.points.assign(m.points().begin(), m.points().end());
+  for(auto f : faces(m))
+  {
+    Repair_triangle t;
+    int i = 0;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) t[std::size_t(i++)] = std::size_t(v);
+    r.triangles.push_back(t);
+  }
+  result.mesh = std::move(r);
+  return result;
+  };
+  try
+  {
+    return build(0);
+  }
+  catch(const Input_error&)
+  {
+    return build(1); // if this fails too, its error is the one reported
+  }
+}
+
+} // namespace internal
+} // namespace Intrinsic_reflectional_symmetry_3
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_INTERNAL_REPAIR_CORE_H

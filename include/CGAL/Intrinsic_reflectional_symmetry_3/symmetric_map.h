@@ -76,6 +76,21 @@ void symmetric_map_setup(const TriangleMesh& tm, const Geodesic_distance_matrix&
   symmetry_settings(np, unit, floor_edges * m.mean_edge_length, rs.number_of_landmarks, rs.symmetry, rs.ignition);
 }
 
+/// the shared first step of `symmetric_regions()` and `symmetric_vertex_map()`:
+/// checks the inputs, reads the settings and grows the regions
+template <class ConcurrencyTag, class TriangleMesh, class CurveRange, class NamedParameters>
+Region_growing_result grow_symmetric_regions(const TriangleMesh& tm, const Geodesic_distance_matrix& D,
+                                             const CurveRange& curves, const NamedParameters& np, Curves_mesh& m,
+                                             std::vector<const Irsa_curve*>& cs, Region_settings& rs)
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  symmetric_map_setup(tm, D, curves, np, m, cs, rs);
+  return curve_regions<ConcurrencyTag>(m, D, cs, rs);
+}
+
 } // namespace internal
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
@@ -153,15 +168,10 @@ template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename Tr
 std::size_t symmetric_regions(const TriangleMesh& tm, const Geodesic_distance_matrix& D, const CurveRange& curves,
                               FaceRegionMap region, const CGAL_NP_CLASS& np = parameters::default_values())
 {
-#ifndef CGAL_LINKED_WITH_TBB
-  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
-                "Parallel_tag is enabled but TBB is unavailable.");
-#endif
   internal::Curves_mesh m;
   std::vector<const Irsa_curve*> cs;
   internal::Region_settings rs;
-  internal::symmetric_map_setup(tm, D, curves, np, m, cs, rs);
-  const internal::Region_growing_result rg = internal::curve_regions<ConcurrencyTag>(m, D, cs, rs);
+  const internal::Region_growing_result rg = internal::grow_symmetric_regions<ConcurrencyTag>(tm, D, curves, np, m, cs, rs);
   const std::vector<int> fl = internal::face_labels(m, rg);
 
   typedef typename boost::property_traits<FaceRegionMap>::value_type Value;
@@ -262,15 +272,10 @@ template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename Tr
 std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance_matrix& D, const CurveRange& curves,
                                  VertexPartnerMap partner, const CGAL_NP_CLASS& np = parameters::default_values())
 {
-#ifndef CGAL_LINKED_WITH_TBB
-  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
-                "Parallel_tag is enabled but TBB is unavailable.");
-#endif
   internal::Curves_mesh m;
   std::vector<const Irsa_curve*> cs;
   internal::Region_settings rs;
-  internal::symmetric_map_setup(tm, D, curves, np, m, cs, rs);
-  const internal::Region_growing_result rg = internal::curve_regions<ConcurrencyTag>(m, D, cs, rs);
+  const internal::Region_growing_result rg = internal::grow_symmetric_regions<ConcurrencyTag>(tm, D, curves, np, m, cs, rs);
   std::vector<std::ptrdiff_t> p(m.number_of_vertices, -1);
   for(std::size_t c = 0; c < cs.size(); ++c)
     internal::dense_region_map<ConcurrencyTag>(m, D, *cs[c], rg.label, int(c), rs, p);

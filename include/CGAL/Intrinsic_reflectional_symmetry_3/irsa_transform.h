@@ -98,8 +98,11 @@ void fill_result_header(const Voting_setup& s, Result& r)
 }
 
 // Runs the fast voting of every voting pair and sums tau in pair order.
+// `index`: the (mesh, D) index of a previous transform on the same mesh and
+// matrix, or nullptr (it is then built here).
 template <class ConcurrencyTag>
-Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& tau, int number_of_threads)
+Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& tau, int number_of_threads,
+                                   const Voting_index* index = nullptr)
 {
   Irsa_voting_result result;
   fill_result_header(s, result);
@@ -121,7 +124,7 @@ Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& t
   // and mu with the pairs grouped by midpoint, so that each column D(., m)
   // (a cache miss per sample) is read once per midpoint, not once per pair.
   auto run = [&] {
-    const Fast_voting fv(s, parallel);
+    const Fast_voting fv(s, parallel, index);
     auto first_pass = [&](std::size_t k, Fast_voting::Scratch& sc) {
       Irsa_voting_pair& r = records[k];
       r.a = s.similar_pairs[s.voting_pairs[k]].first;
@@ -294,10 +297,11 @@ Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& t
 /// reproduces these figures.
 ///
 /// **Cost and determinism.** Everything that does not depend on m' is
-/// evaluated once per voting pair. beta comes from per-block bounds and a
-/// table of the distances to the first vertex of each block of about 16
-/// vertices (most blocks are decided from it), then an edge scan of the
-/// blocks where f can change sign. The voting pairs are processed in two
+/// evaluated once per voting pair. beta comes from blocks of about 16
+/// vertices: the sign of f over a block is decided by a per-block bound or by
+/// one contiguous read of the block (the rows of D are copied in block order),
+/// and the crossing edges are found with sign bit masks on the blocks where f
+/// changes sign or that touch a block of the opposite sign. The voting pairs are processed in two
 /// passes: beta and m for every pair, then the filters and mu with the pairs
 /// grouped by midpoint, so that the column D(., m) (a cache miss per sample)
 /// is read once per midpoint instead of once per pair. The candidate partners
@@ -310,8 +314,9 @@ Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& t
 /// processed in parallel (`ConcurrencyTag`), each alone, and tau is summed
 /// afterwards in pair order: the result is bit-identical at any thread count,
 /// and equal to the literal reference implementation of Alg. 1-2 kept for the
-/// tests. Memory: besides `D`, two sample-by-sample float matrices and a
-/// sample-by-(vertices/8) table (bounds and distances per block).
+/// tests. Memory: besides `D`, a copy of `D` with its columns in block order,
+/// two sample-by-sample float matrices and a sample-by-(vertices/8) table
+/// (bounds and distances per block).
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
 ///         (the default when TBB is linked)

@@ -26,10 +26,15 @@
 
 // The fast per-pair voting of Alg. 1-2. It computes exactly what the literal
 // reference (reference_voting.h) computes, in another order:
-// - beta(a,b): per-block bounds and the distances to each block's first
-//   vertex (a table) decide the sign of f = d(a,.) - d(b,.) on most blocks;
-//   the bisector test then only runs on the vertices of the blocks where f
-//   can change sign;
+// - beta(a,b): vertex blocks of 16 (a Voting_index, which depends only on
+//   the mesh and D and can be shared by several transforms, holds them, the
+//   rows of D in block order, and per-block bounds with the distances to each
+//   block's first vertex). Per pair, the sign of f = d(a,.) - d(b,.) over a
+//   block comes from the bound or from one contiguous read of the block, as
+//   bit masks; crossing edges are found with the masks (inside a block: a
+//   per-vertex neighbour mask; between blocks: only on the blocks that are
+//   mixed or next to a block of the opposite sign), and f is only read again
+//   at the ends of the crossing edges;
 // - the caller groups the voting pairs by midpoint m, so that the column
 //   D(., m) (a cache miss per sample) is read once per midpoint;
 // - the three m'-independent distance tests: one flat, branch-free scan of
@@ -46,6 +51,10 @@
 // does, so mu and tau are bit-identical to it.
 // Define CGAL_IRS_VOTING_STATS for a few extra counters (profiling only).
 
+#ifndef CGAL_IRS_VOTING_BLOCK_SIZE
+#define CGAL_IRS_VOTING_BLOCK_SIZE 16 // vertices per block of the beta search
+#endif
+
 #ifndef CGAL_IRS_VOTING_STAGE
 #define CGAL_IRS_VOTING_STAGE // profiling builds define it as a no-inline attribute
 #endif
@@ -53,6 +62,245 @@
 namespace CGAL {
 namespace Intrinsic_reflectional_symmetry_3 {
 namespace internal {
+
+/// What the fast voting precomputes from the mesh and the distance matrix
+/// alone (not from the similar pairs nor the filter parameters): vertex
+/// blocks with their edge lists and per-sample distance bounds (for beta),
+/// and the sample matrix with its columns in a spatially coherent order (for
+/// the axial-sym counts). Several transforms on the same (mesh, D) with
+/// other similar pairs or parameters can share one index.
+// index of the lowest set bit of x != 0
+inline int ctz(std::uint32_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctz(x);
+#else
+  int k = 0;
+  while(!(x & 1u)) { x >>= 1; ++k; }
+  return k;
+#endif
+}
+
+class Voting_index
+{
+public:
+  Voting_index() = default;
+
+  // `parallel`: build with TBB (the result does not depend on it)
+  Voting_index(const Voting_setup& s, bool parallel)
+    : D_(s.D), number_of_vertices_(s.mesh.number_of_vertices), number_of_samples_(s.number_of_samples),
+      parallel_(parallel)
+  {
+    spatial_order(s);
+    const std::size_t n = number_of_samples_;
+    rows_.resize(n * n);
+    for_each_index(n, [&](std::size_t i) {
+      float* out = rows_.data() + i * n;
+      const float* in = s.dss.row(i);
+      for(std::size_t j = 0; j < n; ++j)
+        out[rank_[j]] = in[j];
+    });
+    build_blocks(s.mesh);
+  }
+
+  /// True if this index was built for `s`'s distance matrix and mesh size.
+  bool fits(const Voting_setup& s) const
+  {
+    return D_ == s.D && number_of_vertices_ == s.mesh.number_of_vertices &&
+           number_of_samples_ == s.number_of_samples;
+  }
+
+  std::size_t number_of_blocks() const { return block_offsets_.size() - 1; }
+
+  // f(i) for i in [0, n), in parallel if asked; f must be thread-safe
+  template <class F>
+  void for_each_index(std::size_t n, F f) const
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(parallel_)
+    {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          for(std::size_t i = range.begin(); i != range.end(); ++i) f(i);
+                        });
+      return;
+    }
+#endif
+    for(std::size_t i = 0; i < n; ++i) f(i);
+  }
+
+  const Geodesic_distance_matrix* D_ = nullptr;
+  std::size_t number_of_vertices_ = 0, number_of_samples_ = 0;
+  bool parallel_ = false;
+  // blocks: vertices of block B at block_vertices_[block_offsets_[B] .. block_offsets_[B+1])
+  std::vector<std::uint32_t> block_offsets_, block_vertices_;
+  // neighbours inside the block of each position, as a bit mask
+  std::vector<std::uint32_t> internal_mask_;
+  // per block, its edges to other blocks: (position here, position there,
+  // other block, local bit here | local bit there << 8), flat
+  std::vector<std::uint32_t> ext_offsets_, ext_;
+  // pairs of adjacent blocks (B1 < B2), flat
+  std::vector<std::uint32_t> block_pairs_;
+  std::vector<std::uint32_t> position_; // position of each vertex in the block order
+  std::vector<float> block_rows_;   // the rows of D, columns in the block order
+  std::vector<float> block_info_;   // (d(x, first vertex of B), L(x, B)), sample-major
+  std::vector<float> rows_;         // dss, columns in the order rank_
+  std::vector<std::uint32_t> rank_; // position of each sample in a spatially coherent order
+
+private:
+  // A spatially coherent order of the samples: recursive bisection of the
+  // sample set by the sign of d(x,.) - d(y,.) for two far apart samples x, y
+  // (median split), down to groups of 16. Only the memory layout depends on it.
+  void spatial_order(const Voting_setup& s)
+  {
+    const Sample_distance_matrix& dss = s.dss;
+    const std::size_t n = s.number_of_samples;
+    std::vector<std::uint32_t> order(n);
+    for(std::size_t i = 0; i < n; ++i) order[i] = std::uint32_t(i);
+    // finite stand-in for distances to other components (keeps the keys comparable)
+    auto d = [&](std::size_t x, std::size_t i) {
+      const float v = dss(x, i);
+      return std::isfinite(v) ? double(v) : 1e30;
+    };
+    std::vector<std::pair<std::size_t, std::size_t>> todo(1, std::make_pair(std::size_t(0), n));
+    while(!todo.empty())
+    {
+      const std::size_t lo = todo.back().first, hi = todo.back().second;
+      todo.pop_back();
+      if(hi - lo <= 16) continue;
+      std::size_t x = order[lo], y = order[lo];
+      double far = -1.;
+      for(std::size_t k = lo; k < hi; ++k)
+        if(d(order[lo], order[k]) > far) { far = d(order[lo], order[k]); x = order[k]; }
+      far = -1.;
+      for(std::size_t k = lo; k < hi; ++k)
+        if(d(x, order[k]) > far) { far = d(x, order[k]); y = order[k]; }
+      const std::size_t mid = lo + (hi - lo) / 2;
+      std::nth_element(order.begin() + lo, order.begin() + mid, order.begin() + hi,
+                       [&](std::uint32_t i, std::uint32_t j) {
+                         const double ki = d(x, i) - d(y, i), kj = d(x, j) - d(y, j);
+                         return ki < kj || (ki == kj && i < j);
+                       });
+      todo.emplace_back(lo, mid);
+      todo.emplace_back(mid, hi);
+    }
+    rank_.resize(n);
+    for(std::size_t i = 0; i < n; ++i) rank_[order[i]] = std::uint32_t(i);
+  }
+
+  // Vertex blocks of about `block_size` vertices, grown by breadth-first
+  // search so that they are compact on the surface whatever the vertex order,
+  // and, for every sample x and block B with first vertex c, a bound
+  // L(x, B) >= |d(x, v) - d(x, c)| over v in B, read from D itself (so no
+  // Lipschitz assumption on the oracle). Then |f(v) - f(c)| <= L(a,B) + L(b,B),
+  // and a block where |f(c)| exceeds that bound has one strict sign throughout.
+  void build_blocks(const Voting_mesh& mesh)
+  {
+    const std::size_t nv = mesh.number_of_vertices;
+    const std::size_t block_size = CGAL_IRS_VOTING_BLOCK_SIZE;
+    static_assert(CGAL_IRS_VOTING_BLOCK_SIZE >= 1 && CGAL_IRS_VOTING_BLOCK_SIZE <= 32, "blocks are 32-bit masks");
+    const std::uint32_t none = std::uint32_t(-1);
+    std::vector<std::uint32_t> block_of(nv, none);
+    block_offsets_.assign(1, 0);
+    std::vector<std::size_t> queue;
+    for(std::size_t seed = 0; seed < nv; ++seed)
+    {
+      if(block_of[seed] != none) continue;
+      const std::uint32_t blk = std::uint32_t(block_offsets_.size() - 1);
+      queue.assign(1, seed);
+      block_of[seed] = blk;
+      std::size_t count = 1;
+      for(std::size_t h = 0; h < queue.size() && count < block_size; ++h)
+      {
+        const std::size_t v = queue[h];
+        for(std::size_t k = mesh.adjacency_offsets[v]; k < mesh.adjacency_offsets[v + 1] && count < block_size; ++k)
+        {
+          const std::size_t u = mesh.adjacency[k];
+          if(block_of[u] != none) continue;
+          block_of[u] = blk;
+          queue.push_back(u);
+          ++count;
+        }
+      }
+      for(std::size_t v : queue) block_vertices_.push_back(std::uint32_t(v));
+      block_offsets_.push_back(std::uint32_t(block_vertices_.size()));
+    }
+    const std::size_t nblocks = block_offsets_.size() - 1;
+    position_.resize(nv);
+    for(std::size_t k = 0; k < nv; ++k) position_[block_vertices_[k]] = std::uint32_t(k);
+    // inside a block: for each position, the mask of its neighbours in the
+    // block (bit = position - first position of the block); between blocks:
+    // per block, the edges to other blocks as (position here, position
+    // there, other block, local bits), every such edge in both blocks' lists
+    internal_mask_.assign(nv, 0);
+    ext_offsets_.assign(nblocks + 1, 0);
+    for(const auto& e : mesh.edges)
+    {
+      const std::uint32_t bu = block_of[e.first], bv = block_of[e.second];
+      const std::uint32_t pu = position_[e.first], pv = position_[e.second];
+      if(bu == bv)
+      {
+        internal_mask_[pu] |= std::uint32_t(1) << (pv - block_offsets_[bu]);
+        internal_mask_[pv] |= std::uint32_t(1) << (pu - block_offsets_[bu]);
+      }
+      else { ++ext_offsets_[bu + 1]; ++ext_offsets_[bv + 1]; }
+    }
+    for(std::size_t blk = 0; blk < nblocks; ++blk)
+      ext_offsets_[blk + 1] += ext_offsets_[blk];
+    ext_.resize(4 * std::size_t(ext_offsets_.back()));
+    std::vector<std::uint32_t> fill(ext_offsets_.begin(), ext_offsets_.end() - 1);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> bpairs;
+    auto put = [&](std::uint32_t bx, std::uint32_t px, std::uint32_t by, std::uint32_t py) {
+      const std::size_t k = fill[bx]++;
+      ext_[4 * k] = px;
+      ext_[4 * k + 1] = py;
+      ext_[4 * k + 2] = by;
+      ext_[4 * k + 3] = (px - block_offsets_[bx]) | ((py - block_offsets_[by]) << 8);
+    };
+    for(const auto& e : mesh.edges)
+    {
+      const std::uint32_t bu = block_of[e.first], bv = block_of[e.second];
+      if(bu == bv) continue;
+      const std::uint32_t pu = position_[e.first], pv = position_[e.second];
+      put(bu, pu, bv, pv);
+      put(bv, pv, bu, pu);
+      bpairs.emplace_back((std::min)(bu, bv), (std::max)(bu, bv));
+    }
+    std::sort(bpairs.begin(), bpairs.end());
+    bpairs.erase(std::unique(bpairs.begin(), bpairs.end()), bpairs.end());
+    for(const auto& bp : bpairs) { block_pairs_.push_back(bp.first); block_pairs_.push_back(bp.second); }
+
+    // The rows of D with their columns in block order (a block is then one or
+    // two cache lines of a row), and the bounds, from them
+    const std::size_t n = number_of_samples_;
+    const float inf = std::numeric_limits<float>::infinity();
+    block_rows_.resize(n * nv);
+    block_info_.assign(2 * n * nblocks, 0.f);
+    for_each_index(n, [&](std::size_t x) {
+      const float* r = D_->row(x);
+      float* out = block_rows_.data() + x * nv;
+      for(std::size_t k = 0; k < nv; ++k)
+        out[k] = r[block_vertices_[k]];
+      float* info = block_info_.data() + 2 * x * nblocks;
+      for(std::size_t blk = 0; blk < nblocks; ++blk)
+      {
+        const float dc = out[block_offsets_[blk]];
+        float bound = 0.f;
+        for(std::size_t k = block_offsets_[blk] + 1; k < block_offsets_[blk + 1]; ++k)
+        {
+          // |d(x,v) - d(x,c)|; infinite if exactly one is finite or d(x,v) is NaN
+          const float dv = out[k];
+          const bool mismatch = (std::isfinite(dc) != std::isfinite(dv)) || std::isnan(dv);
+          const float e = mismatch ? inf : (std::isfinite(dv) ? std::abs(dv - dc) : 0.f);
+          bound = (std::max)(bound, e);
+        }
+        info[2 * blk] = dc;
+        // widened by more than the rounding of the difference
+        info[2 * blk + 1] = float(double(bound) * (1. + 2e-6));
+      }
+    });
+  }
+};
 
 class Fast_voting
 {
@@ -63,9 +311,10 @@ public:
 
   struct Scratch
   {
-    std::vector<std::uint32_t> vertex_stamp;  // beta marks
-    std::uint32_t stamp = 0;
-    std::vector<unsigned char> block_bits;
+    std::vector<unsigned char> block_bits;    // beta: sign status of each block
+    std::vector<unsigned char> block_scan;    // beta: blocks whose edges are tested
+    std::vector<std::uint32_t> found;         // beta, with repetitions
+    std::vector<std::uint32_t> negative_mask, positive_mask, zero_mask; // beta: signs of f per block
     std::vector<std::uint32_t> sample_stamp;  // membership in U
     std::vector<std::uint32_t> sample_slot;   // index in U
     std::uint32_t sstamp = 0;
@@ -101,7 +350,9 @@ public:
   };
 
   // `parallel`: build the indices with TBB (they do not depend on it)
-  explicit Fast_voting(const Voting_setup& s, bool parallel = false) : s_(s), parallel_(parallel)
+  // `shared`: a Voting_index built for the same (mesh, D), or nullptr
+  explicit Fast_voting(const Voting_setup& s, bool parallel = false, const Voting_index* shared = nullptr)
+    : s_(s), parallel_(parallel)
   {
     const std::size_t n = s.number_of_samples;
     // candidate pairs: by a scan of the similar pairs (P per voting pair)
@@ -143,18 +394,13 @@ public:
       neighbors_.insert(neighbors_.end(), lists[i].begin(), lists[i].end());
       neighbor_offsets_[i + 1] = neighbors_.size();
     }
-    // the sample matrix with its columns in a spatially coherent order of the
-    // samples (rank_), for the axial-sym counts: the pairs a count compares lie
-    // in one region of the surface, and their entries then share cache lines
-    spatial_order();
-    rows_.resize(n * n);
-    for_each_index(n, [&](std::size_t i) {
-      float* out = rows_.data() + i * n;
-      const float* in = s.dss.row(i);
-      for(std::size_t j = 0; j < n; ++j)
-        out[rank_[j]] = in[j];
-    });
-    build_blocks();
+    if(shared != nullptr && shared->fits(s))
+      ix_ = shared;
+    else
+    {
+      own_ = Voting_index(s, parallel);
+      ix_ = &own_;
+    }
   }
 
   // f(i) for i in [0, n), in parallel if asked; f must be thread-safe
@@ -177,8 +423,11 @@ public:
   Scratch make_scratch() const
   {
     Scratch sc;
-    sc.vertex_stamp.assign(s_.mesh.number_of_vertices, 0);
-    sc.block_bits.assign(block_offsets_.size() - 1, 0);
+    sc.block_bits.assign(ix_->number_of_blocks(), 0);
+    sc.block_scan.assign(ix_->number_of_blocks(), 0);
+    sc.negative_mask.assign(ix_->number_of_blocks(), 0);
+    sc.positive_mask.assign(ix_->number_of_blocks(), 0);
+    sc.zero_mask.assign(ix_->number_of_blocks(), 0);
     sc.sample_stamp.assign(s_.number_of_samples, 0);
     sc.sample_slot.assign(s_.number_of_samples, 0);
     sc.dist_to_m.assign(s_.number_of_samples, 0.f);
@@ -223,7 +472,7 @@ public:
     const float* ra = s_.D->row(a);
     const float* rb = s_.D->row(b);
     const Clock::time_point t0 = Clock::now();
-    find_boundary(a, b, ra, rb, sc, boundary);
+    find_boundary(a, b, sc, boundary);
     if(!boundary.empty())
     {
       std::size_t m = boundary.front();
@@ -326,139 +575,41 @@ public:
   }
 
 private:
-  // A spatially coherent order of the samples: recursive bisection of the
-  // sample set by the sign of d(x,.) - d(y,.) for two far apart samples x, y
-  // (median split), down to groups of 16. Only the memory layout depends on it.
-  void spatial_order()
+  CGAL_IRS_VOTING_STAGE void find_boundary(std::size_t a, std::size_t b, Scratch& sc,
+                                           std::vector<std::size_t>& boundary) const
   {
-    const Sample_distance_matrix& dss = s_.dss;
-    const std::size_t n = s_.number_of_samples;
-    std::vector<std::uint32_t> order(n);
-    for(std::size_t i = 0; i < n; ++i) order[i] = std::uint32_t(i);
-    // finite stand-in for distances to other components (keeps the keys comparable)
-    auto d = [&](std::size_t x, std::size_t i) {
-      const float v = dss(x, i);
-      return std::isfinite(v) ? double(v) : 1e30;
-    };
-    std::vector<std::pair<std::size_t, std::size_t>> todo(1, std::make_pair(std::size_t(0), n));
-    while(!todo.empty())
-    {
-      const std::size_t lo = todo.back().first, hi = todo.back().second;
-      todo.pop_back();
-      if(hi - lo <= 16) continue;
-      std::size_t x = order[lo], y = order[lo];
-      double far = -1.;
-      for(std::size_t k = lo; k < hi; ++k)
-        if(d(order[lo], order[k]) > far) { far = d(order[lo], order[k]); x = order[k]; }
-      far = -1.;
-      for(std::size_t k = lo; k < hi; ++k)
-        if(d(x, order[k]) > far) { far = d(x, order[k]); y = order[k]; }
-      const std::size_t mid = lo + (hi - lo) / 2;
-      std::nth_element(order.begin() + lo, order.begin() + mid, order.begin() + hi,
-                       [&](std::uint32_t i, std::uint32_t j) {
-                         const double ki = d(x, i) - d(y, i), kj = d(x, j) - d(y, j);
-                         return ki < kj || (ki == kj && i < j);
-                       });
-      todo.emplace_back(lo, mid);
-      todo.emplace_back(mid, hi);
-    }
-    rank_.resize(n);
-    for(std::size_t i = 0; i < n; ++i) rank_[order[i]] = std::uint32_t(i);
-  }
-
-  // Vertex blocks of about `block_size` vertices, grown by breadth-first
-  // search so that they are compact on the surface whatever the vertex order,
-  // and, for every sample x and block B with first vertex c, a bound
-  // L(x, B) >= |d(x, v) - d(x, c)| over v in B, read from D itself (so no
-  // Lipschitz assumption on the oracle). Then |f(v) - f(c)| <= L(a,B) + L(b,B),
-  // and a block where |f(c)| exceeds that bound has one strict sign throughout.
-  void build_blocks()
-  {
-    const Voting_mesh& mesh = s_.mesh;
-    const std::size_t nv = mesh.number_of_vertices;
-    const std::size_t block_size = 16;
-    std::vector<std::size_t> block_of(nv, std::size_t(-1));
-    block_offsets_.assign(1, 0);
-    std::vector<std::size_t> queue;
-    for(std::size_t seed = 0; seed < nv; ++seed)
-    {
-      if(block_of[seed] != std::size_t(-1)) continue;
-      const std::size_t blk = block_offsets_.size() - 1;
-      queue.assign(1, seed);
-      block_of[seed] = blk;
-      std::size_t count = 1;
-      for(std::size_t h = 0; h < queue.size() && count < block_size; ++h)
-      {
-        const std::size_t v = queue[h];
-        for(std::size_t k = mesh.adjacency_offsets[v]; k < mesh.adjacency_offsets[v + 1] && count < block_size; ++k)
-        {
-          const std::size_t u = mesh.adjacency[k];
-          if(block_of[u] != std::size_t(-1)) continue;
-          block_of[u] = blk;
-          queue.push_back(u);
-          ++count;
-        }
-      }
-      for(std::size_t v : queue) block_vertices_.push_back(v);
-      block_offsets_.push_back(block_vertices_.size());
-    }
-    const std::size_t nblocks = block_offsets_.size() - 1;
-    std::vector<std::vector<std::size_t>> adj(nblocks);
-    for(const auto& e : mesh.edges)
-    {
-      const std::size_t bu = block_of[e.first], bv = block_of[e.second];
-      if(bu != bv) { adj[bu].push_back(bv); adj[bv].push_back(bu); }
-    }
-    block_adj_offsets_.assign(1, 0);
-    for(auto& l : adj)
-    {
-      std::sort(l.begin(), l.end());
-      l.erase(std::unique(l.begin(), l.end()), l.end());
-      block_adj_.insert(block_adj_.end(), l.begin(), l.end());
-      block_adj_offsets_.push_back(block_adj_.size());
-    }
-
-    const std::size_t n = s_.number_of_samples;
-    const float inf = std::numeric_limits<float>::infinity();
-    block_info_.assign(2 * n * nblocks, 0.f);
-    for_each_index(n, [&](std::size_t x) {
-      const float* r = s_.D->row(x);
-      for(std::size_t blk = 0; blk < nblocks; ++blk)
-      {
-        const float dc = r[block_vertices_[block_offsets_[blk]]];
-        double bound = 0.;
-        for(std::size_t k = block_offsets_[blk] + 1; k < block_offsets_[blk + 1]; ++k)
-        {
-          const float dv = r[block_vertices_[k]];
-          if(std::isfinite(dc) != std::isfinite(dv) || std::isnan(dv)) { bound = double(inf); break; }
-          if(std::isfinite(dv)) bound = (std::max)(bound, std::abs(double(dv) - double(dc)));
-        }
-        // widened by more than the rounding to float
-        block_info_[2 * (x * nblocks + blk)] = dc;
-        block_info_[2 * (x * nblocks + blk) + 1] = float(bound * (1. + 1e-6));
-      }
-    });
-  }
-
-  CGAL_IRS_VOTING_STAGE void find_boundary(std::size_t a, std::size_t b, const float* ra, const float* rb, Scratch& sc,
-                     std::vector<std::size_t>& boundary) const
-  {
-    const Voting_mesh& mesh = s_.mesh;
-    const std::size_t nblocks = block_offsets_.size() - 1;
+    const Voting_index& ix = *ix_;
+    const std::size_t nblocks = ix.number_of_blocks();
+    const std::size_t nv = s_.mesh.number_of_vertices;
+    const std::uint32_t* offsets = ix.block_offsets_.data();
+    const std::uint32_t* bverts = ix.block_vertices_.data();
     // (d(x, c), L(x, B)) for the first vertex c of each block B, for x = a and b
-    const float* ia = block_info_.data() + 2 * a * nblocks;
-    const float* ib = block_info_.data() + 2 * b * nblocks;
+    const float* ia = ix.block_info_.data() + 2 * a * nblocks;
+    const float* ib = ix.block_info_.data() + 2 * b * nblocks;
     // f is evaluated where needed: at the block centres from the table, and at
-    // the vertices of the few blocks near the bisector from the rows of D
-    auto f = [&](std::size_t v) { return bisector_value(ra, rb, v); };
+    // the vertices of the few blocks near the bisector from the rows of D in
+    // block order (f at position k is f at vertex bverts[k])
+    const float* pa = ix.block_rows_.data() + a * nv;
+    const float* pb = ix.block_rows_.data() + b * nv;
+    auto f = [&](std::size_t k) { return bisector_value(pa, pb, k); };
+    unsigned char* status_of = sc.block_bits.data();
+    unsigned char* scan = sc.block_scan.data();
+    // per block, which of its vertices (bit = position in the block) have
+    // f < 0, f > 0, f == 0 (none of them: f is NaN, another component)
+    std::uint32_t* neg = sc.negative_mask.data();
+    std::uint32_t* pos = sc.positive_mask.data();
+    std::uint32_t* zero = sc.zero_mask.data();
     // pass 1: the sign of f over each block: 1: f < 0 throughout, 2: f > 0
     // throughout, 3: no finite value (another component), 4: mixed or zero.
-    // The bound decides most blocks from their first vertex alone; the others
+    // The bound decides most blocks from their first vertex alone (then f is
+    // finite and of one strict sign at every vertex of the block); the others
     // are classified vertex by vertex.
     for(std::size_t blk = 0; blk < nblocks; ++blk)
     {
       const float la = ia[2 * blk + 1], lb = ib[2 * blk + 1];
       const float fcf = ia[2 * blk] - ib[2 * blk]; // == f(c)
+      const std::uint32_t size = offsets[blk + 1] - offsets[blk];
+      const std::uint32_t full = size >= 32 ? ~std::uint32_t(0) : (std::uint32_t(1) << size) - 1;
       unsigned char status = 0;
       if(std::isnan(fcf))
         status = (std::isfinite(la) && std::isfinite(lb)) ? 3 : 0;
@@ -470,61 +621,91 @@ private:
         if(fc < -bound) status = 1;
         else if(fc > bound) status = 2;
       }
+      std::uint32_t n_mask = status == 1 ? full : 0, p_mask = status == 2 ? full : 0, z_mask = 0;
       if(status == 0)
       {
-        unsigned char bits = 0; // 1: some f < 0, 2: some f > 0, 4: some f == 0
-        for(std::size_t k = block_offsets_[blk]; k < block_offsets_[blk + 1]; ++k)
+        const std::size_t first = offsets[blk];
+        for(std::uint32_t k = 0; k < size; ++k)
         {
-          const float fv = f(block_vertices_[k]);
-          bits |= (unsigned char)((fv < 0.f) | ((fv > 0.f) << 1) | ((fv == 0.f) << 2));
+          const float fv = f(first + k);
+          n_mask |= std::uint32_t(fv < 0.f) << k;
+          p_mask |= std::uint32_t(fv > 0.f) << k;
+          z_mask |= std::uint32_t(fv == 0.f) << k;
         }
-        status = (bits == 1 || bits == 2) ? bits : (bits == 0 ? 3 : 4);
+        const unsigned bits = unsigned(n_mask != 0) | (unsigned(p_mask != 0) << 1) | (unsigned(z_mask != 0) << 2);
+        status = (bits == 1 || bits == 2) ? (unsigned char)bits : (bits == 0 ? 3 : 4);
       }
-      sc.block_bits[blk] = status;
+      status_of[blk] = status;
+      scan[blk] = (unsigned char)(status == 4);
+      neg[blk] = n_mask; pos[blk] = p_mask; zero[blk] = z_mask;
     }
-    if(++sc.stamp == 0)
+    // A crossing edge either has an endpoint in a mixed block, or joins two
+    // blocks of opposite strict signs (statuses 1 and 2: xor 3): both are scanned.
+    const std::uint32_t* bp = ix.block_pairs_.data();
+    const std::size_t nbp = ix.block_pairs_.size() / 2;
+    for(std::size_t k = 0; k < nbp; ++k)
     {
-      std::fill(sc.vertex_stamp.begin(), sc.vertex_stamp.end(), 0);
-      sc.stamp = 1;
+      const std::uint32_t x = bp[2 * k], y = bp[2 * k + 1];
+      const unsigned char opposite = (unsigned char)((status_of[x] ^ status_of[y]) == 3);
+      scan[x] |= opposite;
+      scan[y] |= opposite;
     }
-    // pass 2: the bisector test on the vertices of the mixed blocks, and of
-    // the blocks next to a block of the opposite sign. A crossing edge either
-    // has an endpoint in a mixed block, or joins two blocks of opposite signs.
+    // pass 2: on the scanned blocks, the zeros of f and the crossing edges
+    // (f < 0 at one end, f > 0 at the other), found with the sign masks; only
+    // the crossing edges read f again, to pick their endpoint in beta
+    std::vector<std::uint32_t>& found = sc.found;
+    const std::uint32_t* ext_offsets = ix.ext_offsets_.data();
+    const std::uint32_t* ext = ix.ext_.data();
+    const std::uint32_t* inside = ix.internal_mask_.data();
+    std::size_t nf = 0;
+    // bisector_endpoint() of a crossing edge, by positions
+    auto endpoint = [&](std::uint32_t pu, std::uint32_t pv) {
+      const std::uint32_t u = bverts[pu], v = bverts[pv];
+      const float au = std::abs(f(pu)), av = std::abs(f(pv));
+      return au < av ? u : (av < au ? v : (std::min)(u, v));
+    };
+    auto push = [&](std::uint32_t w) {
+      if(nf == found.size()) found.resize(2 * nf + 64);
+      found[nf++] = w;
+    };
     for(std::size_t blk = 0; blk < nblocks; ++blk)
     {
-      const unsigned char status = sc.block_bits[blk];
-      if(status == 3) continue;
-      bool scan = (status == 4);
-      for(std::size_t k = block_adj_offsets_[blk]; !scan && k < block_adj_offsets_[blk + 1]; ++k)
-      {
-        const unsigned char other = sc.block_bits[block_adj_[k]];
-        scan = (other == 1 || other == 2) && other != status;
-      }
-      if(!scan) continue;
+      if(!scan[blk] || status_of[blk] == 3) continue;
 #ifdef CGAL_IRS_VOTING_STATS
-      ++sc.stat_scanned_blocks; sc.stat_unknown_blocks += (status == 4);
+      ++sc.stat_scanned_blocks; sc.stat_unknown_blocks += (status_of[blk] == 4);
 #endif
-      for(std::size_t k = block_offsets_[blk]; k < block_offsets_[blk + 1]; ++k)
+      const std::uint32_t first = offsets[blk];
+      const std::uint32_t nb = neg[blk], pb_ = pos[blk];
+      // zeros, and the edges inside the block, from their end where f < 0
+      // (a block of one strict sign has neither)
+      if(status_of[blk] == 4)
       {
-        const std::size_t v = block_vertices_[k];
-        const float fv = f(v);
-        if(fv == 0.f) { mark(v, sc, boundary); continue; }
-        for(std::size_t l = mesh.adjacency_offsets[v]; l < mesh.adjacency_offsets[v + 1]; ++l)
+        for(std::uint32_t z = zero[blk]; z != 0; z &= z - 1)
+          push(bverts[first + std::uint32_t(ctz(z))]);
+        for(std::uint32_t m = nb; m != 0; m &= m - 1)
         {
-          const std::size_t u = mesh.adjacency[l];
-          const std::size_t w = bisector_endpoint(v, fv, u, f(u));
-          if(w != std::size_t(-1)) mark(w, sc, boundary);
+          const std::uint32_t k = std::uint32_t(ctz(m));
+          for(std::uint32_t c = inside[first + k] & pb_; c != 0; c &= c - 1)
+            push(endpoint(first + k, first + std::uint32_t(ctz(c))));
         }
       }
+      // edges to other blocks, each once: from here unless the other block
+      // is scanned too and comes first
+      for(std::size_t k = ext_offsets[blk]; k < ext_offsets[blk + 1]; ++k)
+      {
+        const std::uint32_t other = ext[4 * k + 2];
+        if(scan[other] && other < blk) continue;
+        const std::uint32_t bits = ext[4 * k + 3], lu = bits & 0xff, lv = bits >> 8;
+        const std::uint32_t cross = (((nb >> lu) & (pos[other] >> lv)) | ((pb_ >> lu) & (neg[other] >> lv))) & 1u;
+        if(cross)
+          push(endpoint(ext[4 * k], ext[4 * k + 1]));
+      }
     }
-    std::sort(boundary.begin(), boundary.end());
-  }
-
-  static void mark(std::size_t v, Scratch& sc, std::vector<std::size_t>& boundary)
-  {
-    if(sc.vertex_stamp[v] == sc.stamp) return;
-    sc.vertex_stamp[v] = sc.stamp;
-    boundary.push_back(v);
+    std::sort(found.begin(), found.begin() + nf);
+    boundary.clear();
+    for(std::size_t k = 0; k < nf; ++k)
+      if(k == 0 || found[k] != found[k - 1])
+        boundary.push_back(found[k]);
   }
 
   // Pairs {p,q} (p on a's side) that are similar and pass the three
@@ -753,12 +934,12 @@ private:
     }
     // d(s, x) = rows_[s * n + rank_[x]]: the rows of the compared samples,
     // read at the columns of the pairs' samples
-    auto row = [&](std::uint32_t s) { return rows_.data() + std::size_t(s) * n; };
+    auto row = [&](std::uint32_t s) { return ix_->rows_.data() + std::size_t(s) * n; };
     std::vector<std::uint32_t>& rp = sc.rp;
     std::vector<std::uint32_t>& rq = sc.rq;
     rp.resize(ne);
     rq.resize(ne);
-    for(std::size_t k = 0; k < ne; ++k) { rp[k] = rank_[ss[k]]; rq[k] = rank_[ts[k]]; }
+    for(std::size_t k = 0; k < ne; ++k) { rp[k] = ix_->rank_[ss[k]]; rq[k] = ix_->rank_[ts[k]]; }
     auto agree = [&](std::size_t k, std::uint32_t s, std::uint32_t t) {
       const float* rs = row(s);
       const float* rt = row(t);
@@ -843,10 +1024,8 @@ private:
   bool parallel_ = false;
   std::vector<std::size_t> neighbor_offsets_;
   std::vector<std::uint32_t> neighbors_;
-  std::vector<std::size_t> block_offsets_, block_vertices_, block_adj_offsets_, block_adj_;
-  std::vector<float> block_info_;  // (d(x, first vertex of B), L(x, B)), sample-major
-  std::vector<float> rows_;        // dss, columns in the order rank_
-  std::vector<std::uint32_t> rank_; // position of each sample in a spatially coherent order
+  Voting_index own_;                  // built here unless a shared one is given
+  const Voting_index* ix_ = nullptr;
 };
 
 } // namespace internal

@@ -9,6 +9,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/part_repair.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/prepare_mesh.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/segmentation.h>
@@ -19,6 +20,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -35,6 +38,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
 
@@ -53,7 +57,9 @@ usage: irsym MESH --out DIR [options]
 
   MESH                 input mesh (OFF, OBJ, PLY or STL); it is never modified
   --shape NAME         use a generated shape instead of a file: sphere, ellipsoid,
-                       capsule, torus, snowman, two_snowmen, bent_capsule
+                       capsule, torus, snowman, two_snowmen, bent_capsule, stick_figure,
+                       stick_figure_missing_arm (the stick figure with its right arm cut
+                       off and the cut capped, as in the package's repair protocol)
   --out DIR            output directory (created if missing)
   --samples N          number of samples (default: min(3000, vertices / 4), the paper's ratio)
   --seed S             random seed (default: 0); same seed, same result
@@ -62,6 +68,8 @@ usage: irsym MESH --out DIR [options]
   --target-vertices N  first remesh or decimate to about N vertices (default: keep the mesh)
   --remesh             reach --target-vertices by isotropic remeshing (default: decimation
                        when reducing, remeshing when refining)
+  --repair             also rebuild a missing part from its mirror part (part repair) on
+                       the mesh the pipeline ran on; not possible is reported, not an error
   --up AXIS            the mesh axis drawn upwards in the pictures: +X, -X, +Y, -Y, +Z
                        (default) or -Z
   --help               this text
@@ -82,6 +90,10 @@ outputs in DIR:
   curves.ply           input mesh coloured by region, curves in black
   segmentation.txt     symmetry-aware segmentation: one segment id per input face
   segmentation.ply     input mesh, faces coloured by segment
+  repaired.ply         with --repair, if the repair succeeded: the repaired mesh (closed,
+                       2-manifold), grey, with the vertices it added in orange; the
+                       "repair" object of report.json says what was found and added, or why
+                       the repair was not possible (never a broken mesh)
   *.png                pictures of the PLY files, where f3d and xvfb-run are installed
 
 exit status: 0 success, 1 usage error, 2 bad input (the message names the problem)
@@ -94,7 +106,7 @@ struct Options
   unsigned seed = 0;
   int threads = 0;
   long long target_vertices = 0;
-  bool remesh = false;
+  bool remesh = false, repair = false;
   std::string up = "+Z";
 };
 
@@ -129,6 +141,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--threads") o.threads = int(parse_integer(a, value(), 1));
     else if(a == "--target-vertices") o.target_vertices = parse_integer(a, value(), 4);
     else if(a == "--remesh") o.remesh = true;
+    else if(a == "--repair") o.repair = true;
     else if(a == "--up") {
       o.up = value();
       if(o.up.size() != 2 || (o.up[0] != '+' && o.up[0] != '-') || o.up.find_first_of("XYZ", 1) != 1)
@@ -157,8 +170,25 @@ IRS::Generated_shape<Mesh> generate(const std::string& name)
   if(name == "snowman") return IRS::generate_snowman<Mesh>();
   if(name == "two_snowmen") return IRS::generate_two_snowmen<Mesh>();
   if(name == "bent_capsule") return IRS::generate_bent_capsule<Mesh>();
-  throw Usage_error("unknown shape '" + name +
-                    "' (sphere, ellipsoid, capsule, torus, snowman, two_snowmen, bent_capsule)");
+  if(name == "stick_figure") return IRS::generate_stick_figure<Mesh>();
+  if(name == "stick_figure_missing_arm") {
+    // the damage step of run_part_repair_protocol() (and of test_repair): the
+    // right arm (tip: largest x) cut 0.7 from its tip by a plane, the cut capped
+    IRS::Generated_shape<Mesh> g = IRS::generate_stick_figure<Mesh>();
+    namespace in = IRS::internal;
+    const in::Repair_soup s = in::mesh_to_repair_soup(g.mesh, IRS::parameters::default_values());
+    std::size_t tip = 0;
+    for(std::size_t v = 1; v < s.points.size(); ++v)
+      if(s.points[v].x() > s.points[tip].x()) tip = v;
+    std::vector<char> removed(s.points.size(), 0);
+    for(std::size_t v : in::limb_vertices(s, in::soup_neighbours(s), tip, 0.7, in::soup_mean_edge_length(s)))
+      removed[v] = 1;
+    IRS::Generated_shape<Mesh> damaged;
+    in::cut_and_cap(s, removed, damaged.mesh); // no known symmetry any more: none listed
+    return damaged;
+  }
+  throw Usage_error("unknown shape '" + name + "' (sphere, ellipsoid, capsule, torus, snowman, two_snowmen, "
+                    "bent_capsule, stick_figure, stick_figure_missing_arm)");
 }
 
 /// Writes curves, regions and the symmetric map in terms of the input mesh:
@@ -233,6 +263,74 @@ void write_symmetry_outputs(const Mesh& input, const Prepared& prepared, const s
   files.push(irsym::Json::object().add("file", "curves.ply"));
   if(irsym::render_png(ply, (out / "curves.png").string(), up))
     files.push(irsym::Json::object().add("file", "curves.png"));
+}
+
+/// Part repair (--repair) on the working mesh with the pipeline's distance
+/// matrix and curves; writes repaired.ply/png when the result passes the
+/// checks and returns the report's "repair" object. A repair that is not
+/// possible (Input_error) is reported, not thrown: the tool still succeeds.
+irsym::Json repair_outputs(const Mesh& work, const IRS::Geodesic_distance_matrix& D,
+                           const std::vector<IRS::Irsa_curve>& curves, const std::vector<long>& partner,
+                           const fs::path& out, const std::string& up, irsym::Json& files)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  irsym::Json j = irsym::Json::object();
+  j.add("on", "working mesh").add("curves_available", curves.size());
+  Mesh repaired;
+  IRS::Part_repair_report r;
+  try {
+    if(curves.size() == 1) // the CLI's map is then that curve's own map: reuse it
+      r = IRS::repair_missing_parts(work, curves.front(),
+                                    boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, work)),
+                                    repaired);
+    else // each curve needs the map of its curve alone, not the shared partition: computed inside
+      r = IRS::repair_missing_parts(work, D, curves, repaired);
+  }
+  catch(const IRS::Input_error& e) {
+    return j.add("possible", false).add("missing_part_found", false).add("error", std::string(e.what()));
+  }
+
+  // checks of the result, before anything is written
+  const bool valid = CGAL::is_valid_polygon_mesh(repaired) && CGAL::is_triangle_mesh(repaired);
+  const bool closed = valid && CGAL::is_closed(repaired);
+  bool manifold = valid;
+  for(auto v : vertices(repaired))
+    if(manifold && PMP::is_non_manifold_vertex(v, repaired)) manifold = false;
+  const bool self_intersecting = !valid || PMP::does_self_intersect(repaired);
+  // a mesh that already self-intersects (e.g. a scan) keeps its intersections: only new ones are a defect
+  const bool input_self_intersecting = self_intersecting && PMP::does_self_intersect(work);
+  std::set<K::Point_3> old_points(work.points().begin(), work.points().end());
+  std::vector<CGAL::IO::Color> colour(num_vertices(repaired), irsym::label_colour(-1));
+  std::size_t new_vertices = 0;
+  for(auto v : vertices(repaired))
+    if(old_points.count(repaired.point(v)) == 0) { colour[v.idx()] = irsym::label_colour(1); ++new_vertices; }
+
+  j.add("possible", true).add("missing_part_found", r.number_of_parts > 0)
+   .add("parts_added", r.number_of_parts)
+   .add("vertices_added", (long long)(num_vertices(repaired)) - (long long)(num_vertices(work)))
+   .add("faces_added", (long long)(num_faces(repaired)) - (long long)(num_faces(work)))
+   .add("new_vertices", new_vertices)
+   .add("vertices", std::size_t(num_vertices(repaired))).add("faces", std::size_t(num_faces(repaired)))
+   .add("valid", valid).add("closed", closed).add("manifold", manifold)
+   .add("self_intersecting", self_intersecting).add("input_self_intersecting", input_self_intersecting);
+  if(r.number_of_parts > 0) {
+    irsym::Json parts = irsym::Json::array();
+    for(std::size_t k = 0; k < r.number_of_parts; ++k)
+      parts.push(irsym::Json::object().add("mirror_part_vertices", r.part_sizes[k]).add("icp_rms", r.icp_rms[k]));
+    irsym::Json plane = irsym::Json::array();
+    for(double c : r.mirror_plane) plane.push(c);
+    j.add("curve", r.curve).add("mirror_plane", plane).add("parts", parts).add("seams_faired", r.seams_faired);
+  }
+  if(!(valid && closed && manifold && (!self_intersecting || input_self_intersecting))) {
+    j.add("error", "the repaired mesh failed the checks; repaired.ply not written");
+    return j;
+  }
+  const std::string ply = (out / "repaired.ply").string();
+  if(!irsym::write_coloured_ply(repaired, colour, ply)) throw std::runtime_error("cannot write " + ply);
+  files.push(irsym::Json::object().add("file", "repaired.ply"));
+  if(irsym::render_png(ply, (out / "repaired.png").string(), up))
+    files.push(irsym::Json::object().add("file", "repaired.png"));
+  return j;
 }
 
 template <typename Oracle>
@@ -346,6 +444,12 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     if(irsym::render_png(ply, (out / "segmentation.png").string(), opt.up, true))
       files.push(irsym::Json::object().add("file", "segmentation.png"));
   }
+  std::optional<irsym::Json> repair;
+  if(opt.repair) {
+    log.start("part repair");
+    repair = repair_outputs(work, D, curves, partner, out, opt.up, files);
+    log.stop();
+  }
   emit(tau_in, "transform");
   emit(sdf_in, "sdf");
   emit(geo_in, "geodesics");
@@ -375,6 +479,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
                       .add("refinement_iterations", c.number_of_iterations).add("converged", c.converged));
   res.add("curve_details", curve_list);
   report.add("results", res);
+  if(repair) report.add("repair", *repair);
   report.add("outputs", files);
   return 0;
 }
@@ -414,7 +519,8 @@ int main(int argc, char** argv)
     params.add("mesh", opt.mesh_path).add("shape", opt.shape)
           .add("samples", opt.samples ? double(*opt.samples) : std::numeric_limits<double>::quiet_NaN())
           .add("seed", opt.seed).add("geodesics", opt.geodesics).add("threads", threads)
-          .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh).add("up", opt.up);
+          .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh).add("up", opt.up)
+          .add("repair", opt.repair);
     report.add("parameters", params);
 
     int rc = 0;

@@ -8,7 +8,8 @@ build=${1:-build}
 
 packages=(g++ make cmake libcgal-dev libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev
           libgtest-dev libcgal-demo f3d xvfb xauth
-          python3-numpy python3-scipy) # the last two: the shared evaluation tools (benchmarks only)
+          python3-numpy python3-scipy # the shared evaluation tools (benchmarks only)
+          python3-pil) # side-by-side figures (scripts/make_figures.sh)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -290,6 +290,33 @@ TEST(Voting, FastEqualsReferenceWithSdfSimilarity)
   }
 }
 
+TEST(Voting, SharedIndexGivesTheSameVoting)
+{
+  // the (mesh, D) index of one transform serves another on the same mesh and
+  // matrix (other similar pairs, other parameters): same records, same tau
+  const auto shape = IRS::generate_snowman<Mesh>(900);
+  const auto D = sample_distances<IRS::Heat_method_geodesic_oracle<Mesh>>(shape.mesh, 220);
+  const Pairs mirror = mirror_similar_pairs(shape.symmetries, all_symmetries(shape.symmetries), D, 0.03, 16);
+  const Pairs sdf = sdf_similar_pairs(shape.mesh, D);
+  const IRS::internal::Voting_setup first =
+    IRS::internal::make_voting_setup(shape.mesh, D, mirror, IRS::parameters::default_values());
+  const IRS::internal::Voting_index index(first, false);
+  const IRS::internal::Voting_setup second =
+    IRS::internal::make_voting_setup(shape.mesh, D, sdf, IRS::parameters::distance_tolerance_floor(2.));
+  ASSERT_TRUE(index.fits(first));
+  ASSERT_TRUE(index.fits(second));
+  for(const IRS::internal::Voting_setup* s : {&first, &second})
+  {
+    std::vector<double> tau_ref, tau_shared;
+    const IRS::Irsa_voting_result ref = IRS::internal::Reference_voting(*s).run(tau_ref);
+    const IRS::Irsa_voting_result shared =
+      IRS::internal::run_fast_voting<CGAL::Parallel_if_available_tag>(*s, tau_shared, 0, &index);
+    expect_same_voting(ref, tau_ref, shared, tau_shared, s == &first ? "snowman, shared index, mirror pairs"
+                                                                      : "snowman, shared index, SDF pairs, floor 2");
+    EXPECT_EQ(tau_ref, tau_shared); // bit-identical
+  }
+}
+
 TEST(Voting, FastEqualsReferenceWithAllPairsSimilar)
 {
   // every pair similar: the filters alone must sort the pairs out; a seeded

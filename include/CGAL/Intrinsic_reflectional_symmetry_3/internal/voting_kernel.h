@@ -15,6 +15,8 @@
 #include <tbb/parallel_for.h>
 #endif
 
+#include <CGAL/use.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -63,12 +65,6 @@ namespace CGAL {
 namespace Intrinsic_reflectional_symmetry_3 {
 namespace internal {
 
-/// What the fast voting precomputes from the mesh and the distance matrix
-/// alone (not from the similar pairs nor the filter parameters): vertex
-/// blocks with their edge lists and per-sample distance bounds (for beta),
-/// and the sample matrix with its columns in a spatially coherent order (for
-/// the axial-sym counts). Several transforms on the same (mesh, D) with
-/// other similar pairs or parameters can share one index.
 // index of the lowest set bit of x != 0
 inline int ctz(std::uint32_t x)
 {
@@ -81,6 +77,30 @@ inline int ctz(std::uint32_t x)
 #endif
 }
 
+// f(i) for i in [0, n), in parallel if `parallel`; f must be thread-safe
+template <class F>
+void for_each_index(bool parallel, std::size_t n, F f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& range) {
+      for(std::size_t i = range.begin(); i != range.end(); ++i) f(i);
+    });
+    return;
+  }
+#else
+  CGAL_USE(parallel);
+#endif
+  for(std::size_t i = 0; i < n; ++i) f(i);
+}
+
+/// What the fast voting precomputes from the mesh and the distance matrix
+/// alone (not from the similar pairs nor the filter parameters): vertex
+/// blocks with their edge lists and per-sample distance bounds (for beta),
+/// and the sample matrix with its columns in a spatially coherent order (for
+/// the axial-sym counts). Several transforms on the same (mesh, D) with
+/// other similar pairs or parameters can share one index.
 class Voting_index
 {
 public:
@@ -112,22 +132,8 @@ public:
 
   std::size_t number_of_blocks() const { return block_offsets_.size() - 1; }
 
-  // f(i) for i in [0, n), in parallel if asked; f must be thread-safe
   template <class F>
-  void for_each_index(std::size_t n, F f) const
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(parallel_)
-    {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n),
-                        [&](const tbb::blocked_range<std::size_t>& range) {
-                          for(std::size_t i = range.begin(); i != range.end(); ++i) f(i);
-                        });
-      return;
-    }
-#endif
-    for(std::size_t i = 0; i < n; ++i) f(i);
-  }
+  void for_each_index(std::size_t n, F f) const { internal::for_each_index(parallel_, n, f); }
 
   const Geodesic_distance_matrix* D_ = nullptr;
   std::size_t number_of_vertices_ = 0, number_of_samples_ = 0;
@@ -403,22 +409,8 @@ public:
     }
   }
 
-  // f(i) for i in [0, n), in parallel if asked; f must be thread-safe
   template <class F>
-  void for_each_index(std::size_t n, F f) const
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(parallel_)
-    {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n),
-                        [&](const tbb::blocked_range<std::size_t>& range) {
-                          for(std::size_t i = range.begin(); i != range.end(); ++i) f(i);
-                        });
-      return;
-    }
-#endif
-    for(std::size_t i = 0; i < n; ++i) f(i);
-  }
+  void for_each_index(std::size_t n, F f) const { internal::for_each_index(parallel_, n, f); }
 
   Scratch make_scratch() const
   {

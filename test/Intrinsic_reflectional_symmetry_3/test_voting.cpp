@@ -29,6 +29,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -58,35 +60,7 @@ IRS::Geodesic_distance_matrix sample_distances(const TM& tm, std::size_t number_
   return IRS::compute_geodesic_distance_matrix(oracle, samples);
 }
 
-// {i, j}: j is the sample geodesically nearest to the mirror vertex of sample
-// i, for the symmetries in `which`; plus each other pair with probability `noise`
-Pairs mirror_similar_pairs(const std::vector<IRS::Known_symmetry>& symmetries, const std::vector<std::size_t>& which,
-                           const IRS::Geodesic_distance_matrix& D, double noise, unsigned int seed)
-{
-  const std::size_t n = D.number_of_sources();
-  std::vector<char> similar(n * n, 0);
-  for(std::size_t k : which)
-  {
-    const auto& mirror = symmetries[k].mirror;
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      if(mirror[D.sources()[i]] < 0) continue;
-      const std::size_t mv = std::size_t(mirror[D.sources()[i]]);
-      std::size_t best = i;
-      float best_d = std::numeric_limits<float>::infinity();
-      for(std::size_t j = 0; j < n; ++j)
-        if(D(j, mv) < best_d) { best_d = D(j, mv); best = j; }
-      if(best != i) similar[(std::min)(i, best) * n + (std::max)(i, best)] = 1;
-    }
-  }
-  CGAL::Random rng(seed);
-  Pairs pairs;
-  for(std::size_t i = 0; i < n; ++i)
-    for(std::size_t j = i + 1; j < n; ++j)
-      if(similar[i * n + j] || rng.get_double() < noise)
-        pairs.emplace_back(i, j);
-  return pairs;
-}
+using irs_test::mirror_similar_pairs;
 
 // the package's similarity filter: SDF map signatures, default parameters
 template <typename TM>

@@ -285,6 +285,22 @@ const double faust_forearm = 0.2, faust_lower_leg = 0.3;
 const std::size_t faust_samples = 1000;
 const char* faust_shapes[] = {"tr_reg_000", "tr_reg_001", "tr_reg_002", "tr_reg_010", "tr_reg_020"};
 
+// the shape and its two cuts by the FAUST protocol; false when the data is absent
+struct Faust_case { Mesh mesh; IRS::Limb_cut hand, foot; bool ok = false; };
+
+bool read_faust_case(const std::string& name, Faust_case& c)
+{
+  const fs::path file = faust_dir() / (name + ".off");
+  if(!fs::exists(file)) return false;
+  const Faust_tips t = faust_tips(name);
+  c.ok = t.ok && CGAL::IO::read_polygon_mesh(file.string(), c.mesh);
+  c.hand.tip = t.hand;
+  c.hand.length = faust_forearm;
+  c.foot.tip = t.foot;
+  c.foot.length = faust_lower_leg;
+  return true;
+}
+
 } // namespace
 
 class RepairFaust : public ::testing::TestWithParam<const char*> {};
@@ -307,17 +323,11 @@ void expect_closed_or_clear_error(const IRS::Part_repair_protocol_result& r)
 TEST_P(RepairFaust, ClosedManifoldOrClearError)
 {
   const std::string name = GetParam();
-  const fs::path file = faust_dir() / (name + ".off");
-  if(!fs::exists(file)) GTEST_SKIP() << file << " absent";
-  Mesh m;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(file.string(), m));
-  const Faust_tips t = faust_tips(name);
-  ASSERT_TRUE(t.ok);
-  IRS::Limb_cut hand, foot;
-  hand.tip = t.hand;
-  hand.length = faust_forearm;
-  foot.tip = t.foot;
-  foot.length = faust_lower_leg;
+  Faust_case c;
+  if(!read_faust_case(name, c)) GTEST_SKIP() << faust_dir() / (name + ".off") << " absent";
+  ASSERT_TRUE(c.ok) << "could not read " << name << " or its correspondences";
+  const Mesh& m = c.mesh;
+  const IRS::Limb_cut &hand = c.hand, &foot = c.foot;
   for(const std::vector<IRS::Limb_cut>& cuts : {std::vector<IRS::Limb_cut>{hand}, std::vector<IRS::Limb_cut>{hand, foot}})
   {
     Mesh damaged, repaired;
@@ -333,17 +343,11 @@ TEST_P(RepairFaust, ClosedManifoldOrClearError)
 TEST_P(RepairFaust, DISABLED_ForearmAndLowerLegWithinTwoPercent)
 {
   const std::string name = GetParam();
-  const fs::path file = faust_dir() / (name + ".off");
-  if(!fs::exists(file)) GTEST_SKIP() << file << " absent";
-  Mesh m;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(file.string(), m));
-  const Faust_tips t = faust_tips(name);
-  ASSERT_TRUE(t.ok);
-  IRS::Limb_cut hand, foot;
-  hand.tip = t.hand;
-  hand.length = faust_forearm;
-  foot.tip = t.foot;
-  foot.length = faust_lower_leg;
+  Faust_case c;
+  if(!read_faust_case(name, c)) GTEST_SKIP() << faust_dir() / (name + ".off") << " absent";
+  ASSERT_TRUE(c.ok) << "could not read " << name << " or its correspondences";
+  const Mesh& m = c.mesh;
+  const IRS::Limb_cut &hand = c.hand, &foot = c.foot;
   {
     Mesh damaged, repaired;
     SCOPED_TRACE(name + ": forearm");

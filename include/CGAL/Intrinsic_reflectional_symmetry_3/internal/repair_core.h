@@ -67,28 +67,6 @@ inline Repair_point reflect_point(const Repair_point& p, const Repair_vector& n,
   return p - 2. * ((p - c) * n) * n;
 }
 
-/// multi-source edge-graph Dijkstra
-inline std::vector<double> soup_dijkstra_multi(const Repair_soup& s, const std::vector<std::vector<std::size_t> >& nb,
-                                               const std::vector<std::size_t>& sources)
-{
-  std::vector<double> d(s.points.size(), std::numeric_limits<double>::infinity());
-  typedef std::pair<double, std::size_t> Item;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item> > q;
-  for(std::size_t v : sources) { d[v] = 0.; q.push(Item(0., v)); }
-  while(!q.empty())
-  {
-    const Item it = q.top();
-    q.pop();
-    if(it.first > d[it.second]) continue;
-    for(std::size_t w : nb[it.second])
-    {
-      const double dw = it.first + std::sqrt(CGAL::squared_distance(s.points[it.second], s.points[w]));
-      if(dw < d[w]) { d[w] = dw; q.push(Item(dw, w)); }
-    }
-  }
-  return d;
-}
-
 /// least-squares plane (unit normal `n`, point `c`) of points
 inline void fit_plane(const std::vector<Repair_point>& pts, Repair_vector& n, Repair_point& c)
 {
@@ -328,7 +306,7 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   //    smaller counterpart (a limb mapped onto the cap of the missing one);
   //    a vertex without partner is also orphan. Intrinsic, so a posed limb
   //    whose counterpart exists is not taken for a missing one.
-  const std::vector<double> g = soup_dijkstra_multi(s, nb, axis);
+  const std::vector<double> g = soup_dijkstra(s, nb, axis);
   std::vector<char> orphan(n, 0);
   std::vector<double> excess(n, 0.);
   for(std::size_t v = 0; v < n; ++v)
@@ -440,7 +418,7 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     const std::vector<std::size_t>& base = loops.front();
 
     // ICP between the reflected collar (a band outside the part's base) and the other side
-    const std::vector<double> dO = soup_dijkstra_multi(s, nb, base);
+    const std::vector<double> dO = soup_dijkstra(s, nb, base);
     std::vector<Repair_point> collar;
     std::vector<std::size_t> collar_vertices(base.begin(), base.end());
     for(std::size_t v = 0; v < n; ++v)

@@ -27,7 +27,10 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
+#include <limits>
 #include <map>
+#include <queue>
 #include <string>
 #include <utility>
 #include <vector>
@@ -129,6 +132,28 @@ inline std::vector<std::vector<std::size_t> > soup_neighbours(const Repair_soup&
     }
   for(auto& n : nb) { std::sort(n.begin(), n.end()); n.erase(std::unique(n.begin(), n.end()), n.end()); }
   return nb;
+}
+
+/// edge-graph Dijkstra distances from a set of vertices of a soup
+inline std::vector<double> soup_dijkstra(const Repair_soup& s, const std::vector<std::vector<std::size_t> >& nb,
+                                         const std::vector<std::size_t>& sources)
+{
+  std::vector<double> d(s.points.size(), std::numeric_limits<double>::infinity());
+  typedef std::pair<double, std::size_t> Item;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item> > q;
+  for(std::size_t v : sources) { d[v] = 0.; q.push(Item(0., v)); }
+  while(!q.empty())
+  {
+    const Item it = q.top();
+    q.pop();
+    if(it.first > d[it.second]) continue;
+    for(std::size_t w : nb[it.second])
+    {
+      const double dw = it.first + std::sqrt(CGAL::squared_distance(s.points[it.second], s.points[w]));
+      if(dw < d[w]) { d[w] = dw; q.push(Item(dw, w)); }
+    }
+  }
+  return d;
 }
 
 inline double soup_mean_edge_length(const Repair_soup& s)

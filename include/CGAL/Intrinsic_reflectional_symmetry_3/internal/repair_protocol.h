@@ -21,7 +21,6 @@
 #include <cstddef>
 #include <iterator>
 #include <limits>
-#include <queue>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,29 +29,6 @@ namespace CGAL {
 namespace Intrinsic_reflectional_symmetry_3 {
 namespace internal {
 
-/// edge-graph Dijkstra distances from one vertex of a soup
-inline std::vector<double> soup_dijkstra(const Repair_soup& s, const std::vector<std::vector<std::size_t> >& nb,
-                                         std::size_t source)
-{
-  std::vector<double> d(s.points.size(), std::numeric_limits<double>::infinity());
-  typedef std::pair<double, std::size_t> Item;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item> > q;
-  d[source] = 0.;
-  q.push(Item(0., source));
-  while(!q.empty())
-  {
-    const Item it = q.top();
-    q.pop();
-    if(it.first > d[it.second]) continue;
-    for(std::size_t w : nb[it.second])
-    {
-      const double dw = it.first + std::sqrt(CGAL::squared_distance(s.points[it.second], s.points[w]));
-      if(dw < d[w]) { d[w] = dw; q.push(Item(dw, w)); }
-    }
-  }
-  return d;
-}
-
 /// The vertices a plane cut removes: the plane is fitted to the vertices at
 /// geodesic (edge-graph) distance `length` from `tip` (within one mean edge
 /// length), oriented towards the tip; the removed part is the connected set of
@@ -60,7 +36,7 @@ inline std::vector<double> soup_dijkstra(const Repair_soup& s, const std::vector
 inline std::vector<std::size_t> limb_vertices(const Repair_soup& s, const std::vector<std::vector<std::size_t> >& nb,
                                               std::size_t tip, double length, double mean_edge)
 {
-  const std::vector<double> d = soup_dijkstra(s, nb, tip);
+  const std::vector<double> d = soup_dijkstra(s, nb, {tip});
   std::vector<Repair_point> ring;
   for(std::size_t v = 0; v < d.size(); ++v)
     if(std::abs(d[v] - length) <= mean_edge) ring.push_back(s.points[v]);

@@ -39,9 +39,11 @@
 //   at the ends of the crossing edges;
 // - the caller groups the voting pairs by midpoint m, so that the column
 //   D(., m) (a cache miss per sample) is read once per midpoint;
-// - the three m'-independent distance tests: one flat, branch-free scan of
-//   the similar pairs against per-sample windows (or a grid range query over
-//   (d(b,q), d(a,q)) when the similar pairs are many), exact tests on the hits;
+// - the three m'-independent distance tests: d(p,m) ~ d(q,m), which does not
+//   depend on {a,b}, once per midpoint over all similar pairs; then, per
+//   pair, one flat, branch-free scan of the pairs that passed it against
+//   per-sample windows (or a grid range query over (d(b,q), d(a,q)) when the
+//   similar pairs are many), exact tests on the hits;
 // - locality (DBSCAN) and the axial counts once per {a,b}: DBSCAN with
 //   precomputed sample neighbourhoods; the axial counts compared pair by
 //   compared pair (least popular first) for all undecided pairs at once, on
@@ -326,6 +328,8 @@ public:
     std::uint32_t sstamp = 0;
     std::vector<float> dist_to_m;             // D(x, m) for every sample x
     std::size_t loaded_midpoint = std::size_t(-1);
+    std::vector<std::uint32_t> pairs_at_m;    // pair scan: the similar pairs (i, j) with d(i,m) ~ d(j,m), flat
+    std::size_t number_of_pairs_at_m = 0;
     std::vector<float> coordinates;           // (d(a,x), d(b,x)) for every sample x
     std::vector<float> windows;               // pair scan: intervals per sample
     std::vector<std::uint32_t> hits;          // pair scan: pairs inside the windows
@@ -425,6 +429,8 @@ public:
     sc.dist_to_m.assign(s_.number_of_samples, 0.f);
     sc.coordinates.assign(2 * s_.number_of_samples, 0.f);
     sc.windows.assign(4 * s_.number_of_samples, 0.f);
+    sc.pairs_at_m.assign(pair_samples_.size(), 0);
+    sc.hits.assign(pair_samples_.size() / 2, 0);
     return sc;
   }
 
@@ -495,6 +501,25 @@ public:
     for(std::size_t x = 0; x < s_.number_of_samples; ++x)
       to_m[x] = column[x * nv];
     sc.loaded_midpoint = m;
+    if(use_pair_scan_)
+    {
+      // The test d(p,m) ~ d(q,m) does not depend on a, b nor on which of
+      // the two samples is p: applied once here, it leaves the scans of the
+      // group's pairs a fraction of the similar pairs (canonical order kept).
+      const Distance_tolerance& tol = s_.settings.tolerance;
+      const std::size_t np = pair_samples_.size() / 2;
+      const std::uint32_t* ps = pair_samples_.data();
+      std::uint32_t* out = sc.pairs_at_m.data(); // sized by make_scratch()
+      std::size_t nm = 0;
+      for(std::size_t k = 0; k < np; ++k)
+      {
+        const std::uint32_t i = ps[2 * k], j = ps[2 * k + 1];
+        out[2 * nm] = i;
+        out[2 * nm + 1] = j;
+        nm += std::size_t(tol(to_m[i], to_m[j]));
+      }
+      sc.number_of_pairs_at_m = nm;
+    }
     sc.stage_seconds[1] += std::chrono::duration<double>(Clock::now() - t0).count();
   }
 
@@ -713,8 +738,8 @@ private:
     sc.candidates.clear();
     // d(x, m) for every sample x: loaded by load_midpoint(m)
     const float* to_m = sc.dist_to_m.data();
-    // the m'-independent distance tests of a pair p (a's side), q (b's side)
-    // that already passed d(a,p) ~ d(b,q) and d(a,q) ~ d(b,p)
+    // the last m'-independent distance test (range queries) of a pair p (a's
+    // side), q (b's side) that already passed d(a,p) ~ d(b,q) and d(a,q) ~ d(b,p)
     auto test_at_m = [&](std::size_t p, std::size_t q) {
       const float dpm = to_m[p], dqm = to_m[q];
       if(!tol(dpm, dqm))
@@ -724,11 +749,12 @@ private:
 
     if(use_pair_scan_)
     {
-      // A scan of the similar pairs {i, j} (i < j) in their canonical order
-      // (the output needs no sort). Whichever of i and j is on a's side, the
-      // two tests say d(b,j) ~ d(a,i) and d(a,j) ~ d(b,i): a window test on
-      // j's coordinates (d(a,j), d(b,j)) against conservative intervals of
-      // the test computed once per sample i. The scan is one flat loop
+      // A scan of the similar pairs {i, j} (i < j) that passed the test at m
+      // (load_midpoint()), in their canonical order (the output needs no
+      // sort). Whichever of i and j is on a's side, the two tests say
+      // d(b,j) ~ d(a,i) and d(a,j) ~ d(b,i): a window test on j's
+      // coordinates (d(a,j), d(b,j)) against conservative intervals of the
+      // test computed once per sample i. The scan is one flat loop
       // without branches that compacts the few pairs inside both windows;
       // the exact tests then run on those.
       float* co = sc.coordinates.data(); // (d(a,x), d(b,x))
@@ -748,11 +774,10 @@ private:
         win[4 * x + 2] = (std::min)(bx * (1.f - eps), bx - floor) - sb;
         win[4 * x + 3] = (std::max)(bx * inv, bx + floor) + sb;
       }
-      const std::size_t np = pair_samples_.size() / 2;
-      std::vector<std::uint32_t>& hits = sc.hits;
-      hits.resize(np + 1);
+      const std::size_t np = sc.number_of_pairs_at_m;
+      std::uint32_t* hits = sc.hits.data(); // sized by make_scratch()
       std::size_t nh = 0;
-      const std::uint32_t* ps = pair_samples_.data();
+      const std::uint32_t* ps = sc.pairs_at_m.data();
       for(std::size_t k = 0; k < np; ++k)
       {
         const std::uint32_t i = ps[2 * k], j = ps[2 * k + 1];
@@ -772,7 +797,7 @@ private:
         else if(bi < ai && aj < bj) { p = j; q = i; }
         else continue;
         if(tol(co[2 * p], co[2 * q + 1]) && tol(co[2 * p + 1], co[2 * q]))
-          test_at_m(p, q);
+          sc.candidates.push_back({i, j, p, q});
       }
     }
     else
@@ -867,12 +892,19 @@ private:
     const std::uint32_t st = sc.sstamp;
     auto neighbors = [&](std::size_t i, std::vector<std::size_t>& out) {
       const std::size_t u = sc.points[i];
-      for(std::size_t k = neighbor_offsets_[u]; k < neighbor_offsets_[u + 1]; ++k)
+      const std::size_t k0 = neighbor_offsets_[u], k1 = neighbor_offsets_[u + 1];
+      // one resize and a branch-free compaction, not a push_back per neighbour
+      const std::size_t old = out.size();
+      out.resize(old + (k1 - k0));
+      std::size_t* o = out.data() + old;
+      std::size_t no = 0;
+      for(std::size_t k = k0; k < k1; ++k)
       {
         const std::size_t w = neighbors_[k];
-        if(sc.sample_stamp[w] == st)
-          out.push_back(sc.sample_slot[w]);
+        o[no] = sc.sample_slot[w];
+        no += std::size_t(sc.sample_stamp[w] == st);
       }
+      out.resize(old + no);
     };
     dbscan(sc.points.size(), s_.settings.locality_min_points, neighbors, sc.labels);
 
@@ -900,11 +932,14 @@ private:
   // them; itself included) have d(s,p) ~ d(t,q) and d(s,q) ~ d(t,p). The
   // count of a pair stops as soon as its verdict is certain, which gives the
   // verdict of the full count. The compared pairs are visited least
-  // "popular" first (fewest agreements with the first 32 compared pairs):
+  // "popular" first (fewest agreements with the first 16 compared pairs):
   // they disagree with most pairs and settle the failing ones (most) early.
-  // They are taken eight at a time by all undecided pairs together, so that
-  // their 16 rows of the sample matrix stay in cache while the pairs' columns
-  // (in a spatially coherent order) are read.
+  // They are taken 16 at a time by all undecided pairs together, so that
+  // their 32 rows of the sample matrix stay in cache (L2) while the pairs'
+  // columns (in a spatially coherent order) are read. (16 rather than 8:
+  // half the passes over the undecided pairs, and with the default eps_AXS a
+  // failing pair needs 26 disagreements, so it seldom leaves earlier; 32
+  // rows fit in L2, 64 do not and were measured slower.)
   CGAL_IRS_VOTING_STAGE void apply_axial(Scratch& sc) const
   {
     const Distance_tolerance& tol = s_.settings.tolerance;
@@ -938,9 +973,10 @@ private:
       return std::uint32_t(tol(rs[rp[k]], rt[rq[k]]) & tol(rs[rq[k]], rt[rp[k]]));
     };
 
-    // popularity of each compared pair: its agreements with the first 32
-    // compared pairs (the relation is symmetric up to the asymmetry of D)
-    const std::size_t first = (std::min)(nc, std::size_t(32));
+    // popularity of each compared pair: its agreements with the first 16
+    // compared pairs (the relation is symmetric up to the asymmetry of D;
+    // 16 orders about as well as 32 at half the cost)
+    const std::size_t first = (std::min)(nc, std::size_t(16));
     std::vector<std::uint32_t>& count = sc.counts;
     count.assign(nc, 0);
     for(std::size_t i = 0; i < nc; ++i)
@@ -977,17 +1013,35 @@ private:
     std::vector<unsigned char>& pass = sc.axial_pass;
     pass.assign(ne, needed == 0 ? 1 : 0);
     if(needed == 0) active.clear();
-    const std::size_t chunk = 8;
+    const std::size_t chunk = 16;
     for(std::size_t l0 = 0; l0 < nc && !active.empty(); l0 += chunk)
     {
       const std::size_t l1 = (std::min)(nc, l0 + chunk);
+      const std::size_t w = l1 - l0;
+      const float* srow[chunk];
+      const float* trow[chunk];
+      for(std::size_t l = 0; l < w; ++l) { srow[l] = row(os[l0 + l]); trow[l] = row(ot[l0 + l]); }
       std::size_t out = 0;
       for(std::size_t idx = 0; idx < active.size(); ++idx)
       {
         const std::uint32_t k = active[idx];
+        const std::uint32_t cp = rp[k], cq = rq[k];
         std::uint32_t ck = c[k];
-        for(std::size_t l = l0; l < l1; ++l)
-          ck += agree(k, os[l], ot[l]);
+        if(w == chunk)
+        {
+          // loads first, then the tests in a loop the compiler vectorises
+          float sp[chunk], tq[chunk], sq[chunk], tp[chunk];
+          for(std::size_t l = 0; l < chunk; ++l)
+          {
+            sp[l] = srow[l][cp]; tq[l] = trow[l][cq];
+            sq[l] = srow[l][cq]; tp[l] = trow[l][cp];
+          }
+          for(std::size_t l = 0; l < chunk; ++l)
+            ck += std::uint32_t(tol(sp[l], tq[l]) & tol(sq[l], tp[l]));
+        }
+        else
+          for(std::size_t l = l0; l < l1; ++l)
+            ck += agree(k, os[l], ot[l]);
         c[k] = ck;
 #ifdef CGAL_IRS_VOTING_STATS
         sc.stat_axial_checks += l1 - l0;

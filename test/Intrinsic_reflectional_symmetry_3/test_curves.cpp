@@ -318,6 +318,74 @@ TEST(Curves, PruningCutsLowSupportRuns)
   EXPECT_EQ(curves[0].polylines[0].vertices.size(), 10u);
 }
 
+TEST(Curves, NestedSymmetriesAreKeptOtherSymmetriesOfAPartRemoved)
+{
+  // a capsule along z; the better curve is the z=0 plane (it swaps the two
+  // ends). Candidates, with synthetic support masks and partners:
+  //  - the x=0 plane over the whole capsule: another symmetry of the same
+  //    part (the z=0 reflection maps it onto itself): removed;
+  //  - the z=0 plane again: the same axis voted twice: removed;
+  //  - the y=0 plane on the top end only: a nested symmetry (the z=0
+  //    reflection maps the top end to the bottom end): kept.
+  // And a curve whose reflection "holds" everywhere only as fixed points
+  // (every vertex its own partner, as the far side of a shape sees a small
+  // part's landmarks) has as its part only the band along the curve.
+  typedef IRS::internal::Mirror_matcher MM;
+  const auto shape = IRS::generate_capsule<Mesh>(1500);
+  const std::vector<Point> pts = vertex_points(shape.mesh);
+  const std::size_t nv = pts.size();
+  const IRS::internal::Curves_mesh m = IRS::internal::make_curves_mesh(shape.mesh, IRS::parameters::default_values());
+  const double e = shape.mean_edge_length;
+  auto mirror = [&](std::size_t k) {
+    std::vector<std::size_t> p(nv, MM::none);
+    for(std::size_t v = 0; v < nv; ++v)
+      if(shape.symmetries[k].mirror[v] >= 0) p[v] = std::size_t(shape.symmetries[k].mirror[v]);
+    return p;
+  };
+  auto curve = [&](std::size_t k, double min_z) {
+    IRS::internal::Working_curve c;
+    IRS::internal::Level_set_polyline pl;
+    for(std::size_t v : shape.symmetries[k].axis)
+      if(pts[v].z() > min_z) { pl.vertices.push_back(v); pl.weights.push_back(1.); }
+    c.polylines.push_back(pl);
+    return c;
+  };
+  const double low = -1e9, top = 1.1; // the cylinder ends at z = 1
+  std::vector<unsigned char> all(nv, 1), top_end(nv, 0);
+  for(std::size_t v = 0; v < nv; ++v) top_end[v] = pts[v].z() > 0.9;
+  std::vector<std::size_t> identity(nv);
+  for(std::size_t v = 0; v < nv; ++v) identity[v] = v;
+
+  std::vector<IRS::internal::Working_curve> curves = {curve(2, low), curve(0, low), curve(2, low), curve(1, top)};
+  for(std::size_t c = 0; c < curves.size(); ++c) curves[c].pair = c;
+  std::vector<std::vector<unsigned char>> masks = {all, all, all, top_end};
+  const std::vector<std::vector<std::size_t>> partners = {mirror(2), mirror(0), mirror(2), mirror(1)};
+  ASSERT_FALSE(curves[3].polylines[0].vertices.empty());
+  const IRS::internal::Working_curve top_curve = curves[3];
+  IRS::internal::remove_dominated_curves(m, 0.5, 3. * e, curves, masks, partners);
+  std::vector<std::size_t> kept;
+  for(const auto& c : curves) kept.push_back(c.pair);
+  EXPECT_EQ(kept, (std::vector<std::size_t>{0, 3}));
+  EXPECT_EQ(masks.size(), curves.size());
+
+  // fixed points count only near the curve
+  const std::vector<std::size_t> none(nv, MM::none);
+  const auto whole = IRS::internal::curve_part(m, top_curve.flat_vertices(), all, none, 3. * e);
+  const auto band = IRS::internal::curve_part(m, top_curve.flat_vertices(), all, identity, 3. * e);
+  std::size_t whole_size = 0, band_size = 0;
+  double band_min_z = 1e9;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    whole_size += whole[v];
+    band_size += band[v];
+    if(band[v]) band_min_z = (std::min)(band_min_z, pts[v].z());
+  }
+  EXPECT_EQ(whole_size, nv);
+  EXPECT_GT(band_size, top_curve.flat_vertices().size());
+  EXPECT_LT(band_size, nv / 5);
+  EXPECT_GT(band_min_z, top - 3. * e - 1e-9);
+}
+
 // ---------------------------------------------------------------- known mirror maps
 
 TEST(Curves, MapMatchesKnownMirrorOnGeneratedShapes)

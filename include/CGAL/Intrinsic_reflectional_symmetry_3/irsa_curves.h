@@ -234,12 +234,18 @@ inline Irsa_curve to_irsa_curve(const Working_curve& w, const Irsa_voting_result
 /// matched among themselves, and mutual matches within the tolerance become
 /// landmarks too (3 rounds; the landmark set under which the reflection holds
 /// at the most samples is kept, and voted pairs that disagree with it are
-/// dropped). A curve whose reflection holds mostly (at more than half of the
-/// vertices where it holds) where a better ranked curve's reflection holds
-/// too is another
-/// symmetry of the same part (e.g. the front-back "symmetry" of a human body,
-/// or the other mirror planes of an ellipsoid), not the axis of another part:
-/// the PIRS regions partition the shape, so it is removed.
+/// dropped). A curve's *part* is the set of vertices connected to it through
+/// vertices where its reflection holds (a vertex that is its own partner
+/// counts only within two mean sample spacings of the curve: genuine fixed
+/// points lie on the axis, while from far away a small part's landmarks look
+/// like one point). A curve whose part lies mostly (more than half) where a
+/// better ranked curve's reflection holds, and which that reflection maps
+/// mostly onto itself, is another symmetry of the same part or the same axis
+/// voted again (e.g. the front-back "symmetry" of a human body, or the other
+/// mirror planes of an ellipsoid): the PIRS regions partition the shape, so
+/// it is removed. A part that the better curve's reflection maps elsewhere
+/// (a leg, mapped to the other leg by the body's reflection) is a nested
+/// symmetry and its curve is kept.
 ///
 /// **3. Iterative refinement.** All curves grow regions at once (grass fire
 /// along the mesh edges from the whole curve, so fronts move orthogonally to

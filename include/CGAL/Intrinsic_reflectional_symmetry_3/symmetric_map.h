@@ -77,18 +77,20 @@ void symmetric_map_setup(const TriangleMesh& tm, const Geodesic_distance_matrix&
 }
 
 /// the shared first step of `symmetric_regions()` and `symmetric_vertex_map()`:
-/// checks the inputs, reads the settings and grows the regions
+/// checks the inputs, reads the settings and grows the regions (all at once,
+/// or one after the other by prominence for the map)
 template <class ConcurrencyTag, class TriangleMesh, class CurveRange, class NamedParameters>
 Region_growing_result grow_symmetric_regions(const TriangleMesh& tm, const Geodesic_distance_matrix& D,
                                              const CurveRange& curves, const NamedParameters& np, Curves_mesh& m,
-                                             std::vector<const Irsa_curve*>& cs, Region_settings& rs)
+                                             std::vector<const Irsa_curve*>& cs, Region_settings& rs,
+                                             bool by_prominence = false)
 {
 #ifndef CGAL_LINKED_WITH_TBB
   static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
                 "Parallel_tag is enabled but TBB is unavailable.");
 #endif
   symmetric_map_setup(tm, D, curves, np, m, cs, rs);
-  return curve_regions<ConcurrencyTag>(m, D, cs, rs);
+  return by_prominence ? prominence_regions<ConcurrencyTag>(m, D, cs, rs) : curve_regions<ConcurrencyTag>(m, D, cs, rs);
 }
 
 } // namespace internal
@@ -187,9 +189,18 @@ std::size_t symmetric_regions(const TriangleMesh& tm, const Geodesic_distance_ma
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
-/// The point-to-point reflection induced by each IRSA curve in its symmetric
-/// region (see `symmetric_regions()`): every vertex of a region gets a mirror
-/// partner in the same region; other vertices get -1.
+/// The point-to-point reflection induced by the IRSA curves: every vertex
+/// where a curve's reflection holds gets a mirror partner by the most
+/// prominent such curve; other vertices get -1.
+///
+/// **Which curve maps a vertex.** The curves are taken in order (best first,
+/// as `extract_irsa_curves()` returns them); each grows its region alone, as
+/// in `symmetric_regions()` but only into the vertices no better curve took.
+/// So a nested symmetry (a leg's own axis inside a human body) does not
+/// replace the reflection of the whole (the body's, mapping one leg to the
+/// other) where both hold, while the regions of `symmetric_regions()`, a
+/// partition, give the leg to its own axis. With one curve the map's region is
+/// the curve's symmetric region. The partner lies in the same region.
 ///
 /// **Method.** A curve's reflection is represented by landmark pairs of
 /// samples (p_k, q_k), K at most `number_of_landmarks`: its voting pair
@@ -275,7 +286,8 @@ std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance
   internal::Curves_mesh m;
   std::vector<const Irsa_curve*> cs;
   internal::Region_settings rs;
-  const internal::Region_growing_result rg = internal::grow_symmetric_regions<ConcurrencyTag>(tm, D, curves, np, m, cs, rs);
+  const internal::Region_growing_result rg =
+    internal::grow_symmetric_regions<ConcurrencyTag>(tm, D, curves, np, m, cs, rs, true);
   std::vector<std::ptrdiff_t> p(m.number_of_vertices, -1);
   for(std::size_t c = 0; c < cs.size(); ++c)
     internal::dense_region_map<ConcurrencyTag>(m, D, *cs[c], rg.label, int(c), rs, p);

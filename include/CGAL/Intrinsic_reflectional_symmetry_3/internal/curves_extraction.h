@@ -198,21 +198,62 @@ curve_landmarks(const Geodesic_distance_matrix& D, std::size_t a, std::size_t b,
 }
 
 /// The vertices supporting each curve's reflection (curves_mirror.h), with
-/// landmarks from its voting pair and its initial eligible pairs.
+/// landmarks from its voting pair and its initial eligible pairs; with
+/// `partners`, also the best mirror partner of every vertex under each.
 template <class ConcurrencyTag>
 std::vector<std::vector<unsigned char>> curve_masks(const Geodesic_distance_matrix& D,
                                                     const Curve_settings& st,
-                                                    const std::vector<Working_curve>& curves)
+                                                    const std::vector<Working_curve>& curves,
+                                                    std::vector<std::vector<std::size_t>>* partners = nullptr)
 {
   std::vector<std::vector<unsigned char>> masks;
+  if(partners) partners->assign(curves.size(), std::vector<std::size_t>());
   const std::vector<unsigned char> everywhere(D.number_of_vertices(), 1);
-  for(const Working_curve& c : curves)
+  for(std::size_t c = 0; c < curves.size(); ++c)
   {
-    const auto landmarks =
-      curve_landmarks<ConcurrencyTag>(D, c.a, c.b, c.initial_pairs, everywhere, st.number_of_landmarks, st.symmetry);
-    masks.push_back(symmetry_support_mask<ConcurrencyTag>(D, c.flat_vertices(), landmarks, st.symmetry));
+    const auto landmarks = curve_landmarks<ConcurrencyTag>(D, curves[c].a, curves[c].b, curves[c].initial_pairs,
+                                                           everywhere, st.number_of_landmarks, st.symmetry);
+    masks.push_back(symmetry_support_mask<ConcurrencyTag>(D, curves[c].flat_vertices(), landmarks, st.symmetry,
+                                                          partners ? &(*partners)[c] : nullptr));
   }
   return masks;
+}
+
+/// The part of the shape a curve is the axis of: the vertices connected to
+/// the curve through vertices where its reflection holds, a vertex that is
+/// its own best partner counting only within `axis_radius` of the curve.
+/// Why: seen from far away, the landmarks of a small part (a leg) shrink to a
+/// point, so every distant vertex is "its own mirror" within the relative
+/// tolerance; genuine fixed points of a reflection lie on its axis.
+inline std::vector<unsigned char> curve_part(const Curves_mesh& m, const std::vector<std::size_t>& curve_vertices,
+                                             const std::vector<unsigned char>& mask,
+                                             const std::vector<std::size_t>& partner, double axis_radius)
+{
+  const std::size_t nv = m.number_of_vertices;
+  Edge_dijkstra dij(m);
+  std::vector<std::pair<std::size_t, double>> sources;
+  for(std::size_t v : curve_vertices) sources.emplace_back(v, 0.);
+  dij.run(sources, axis_radius);
+  std::vector<unsigned char> near_axis(nv, 0);
+  for(std::size_t v : dij.reached()) near_axis[v] = 1;
+
+  std::vector<unsigned char> part(nv, 0);
+  std::vector<std::size_t> stack;
+  for(std::size_t v : curve_vertices)
+    if(!part[v]) { part[v] = 1; stack.push_back(v); }
+  while(!stack.empty())
+  {
+    const std::size_t v = stack.back();
+    stack.pop_back();
+    for(std::size_t k = m.adjacency_offsets[v]; k < m.adjacency_offsets[v + 1]; ++k)
+    {
+      const std::size_t w = m.adjacency[k];
+      if(part[w] || !mask[w] || (partner[w] == w && !near_axis[w])) continue;
+      part[w] = 1;
+      stack.push_back(w);
+    }
+  }
+  return part;
 }
 
 inline std::vector<Region_seed_curve> region_seeds(const std::vector<Working_curve>& curves,
@@ -232,28 +273,51 @@ inline std::vector<Region_seed_curve> region_seeds(const std::vector<Working_cur
   return seeds;
 }
 
-/// Step 1b. A curve whose reflection holds mostly where the reflection of a
-/// better ranked curve holds too (more than `maximum_overlap` of its support
-/// mask inside the union of the masks of the better curves kept) is another
-/// symmetry of the same part, not the axis of another part: the PIRS regions
-/// partition the shape, so it is removed (e.g. the front-back "symmetry" of a
-/// human body, or the other mirror planes of an ellipsoid).
-inline void remove_dominated_curves(double maximum_overlap, std::vector<Working_curve>& curves,
-                                    std::vector<std::vector<unsigned char>>& masks)
+/// Step 1b. Keeps the curves that are the axes of different parts. A curve
+/// whose part (`curve_part()`) lies mostly (more than `maximum_overlap`)
+/// where the reflection of a better ranked kept curve holds is either
+///  - another symmetry of that curve's part, or the same axis voted again
+///    (the front-back "symmetry" of a human body, the other mirror planes of
+///    an ellipsoid): the better curve's reflection maps the part mostly onto
+///    itself; it is removed, since the PIRS regions partition the shape;
+///  - or the axis of a sub-part that the better curve's reflection maps to
+///    another sub-part (a leg, mapped to the other leg by the body's
+///    reflection): a nested symmetry, kept (paper Fig. 12).
+inline void remove_dominated_curves(const Curves_mesh& m, double maximum_overlap, double axis_radius,
+                                    std::vector<Working_curve>& curves,
+                                    std::vector<std::vector<unsigned char>>& masks,
+                                    const std::vector<std::vector<std::size_t>>& partners)
 {
   if(curves.empty()) return;
-  std::vector<unsigned char> covered(masks.front().size(), 0);
+  const std::size_t nv = m.number_of_vertices;
   std::vector<Working_curve> kept_curves;
   std::vector<std::vector<unsigned char>> kept_masks;
+  std::vector<std::size_t> kept_index;
   for(std::size_t c = 0; c < curves.size(); ++c)
   {
-    std::size_t size = 0, inside = 0;
-    for(std::size_t v = 0; v < covered.size(); ++v)
-      if(masks[c][v]) { ++size; inside += covered[v]; }
-    if(!kept_curves.empty() && double(inside) > maximum_overlap * double(size)) continue;
-    for(std::size_t v = 0; v < covered.size(); ++v) covered[v] |= masks[c][v];
+    const std::vector<unsigned char> part =
+      curve_part(m, curves[c].flat_vertices(), masks[c], partners[c], axis_radius);
+    std::size_t size = 0;
+    for(std::size_t v = 0; v < nv; ++v) size += part[v];
+    bool keep = true;
+    for(std::size_t k = 0; keep && k < kept_index.size(); ++k)
+    {
+      const std::vector<unsigned char>& mask_k = kept_masks[k];
+      const std::vector<std::size_t>& partner_k = partners[kept_index[k]];
+      std::size_t inside = 0, onto_itself = 0;
+      for(std::size_t v = 0; v < nv; ++v)
+      {
+        if(!part[v] || !mask_k[v]) continue;
+        ++inside;
+        onto_itself += (partner_k[v] != Mirror_matcher::none && part[partner_k[v]]);
+      }
+      if(double(inside) > maximum_overlap * double(size) && double(onto_itself) > maximum_overlap * double(inside))
+        keep = false;
+    }
+    if(!keep) continue;
     kept_curves.push_back(std::move(curves[c]));
     kept_masks.push_back(std::move(masks[c]));
+    kept_index.push_back(c);
   }
   curves.swap(kept_curves);
   masks.swap(kept_masks);
@@ -270,8 +334,9 @@ void refine_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D, cons
   for(auto& c : curves) recompute_support(D, st, c);
   // the curves do not move and their landmarks come from the initial pairs:
   // the support masks are computed once
-  std::vector<std::vector<unsigned char>> masks = curve_masks<ConcurrencyTag>(D, st, curves);
-  remove_dominated_curves(st.maximum_overlap, curves, masks);
+  std::vector<std::vector<std::size_t>> partners;
+  std::vector<std::vector<unsigned char>> masks = curve_masks<ConcurrencyTag>(D, st, curves, &partners);
+  remove_dominated_curves(m, st.maximum_overlap, 2. * st.ignition, curves, masks, partners);
   for(std::size_t it = 0; it < st.number_of_iterations && !curves.empty(); ++it)
   {
     const Region_growing_result rg = grow_regions(m, region_seeds(curves, masks), st.ignition);

@@ -267,16 +267,19 @@ spread_landmarks(const Geodesic_distance_matrix& D, const std::vector<std::pair<
 
 /// The vertices where the reflection of a curve holds: the curve vertices,
 /// and every vertex whose best partner (over the whole mesh) has a residual
-/// within the tolerance. Indexed by vertex index.
+/// within the tolerance. Indexed by vertex index. With `partner`, also the
+/// best partner of every vertex (`Mirror_matcher::none` where there is none).
 template <class ConcurrencyTag>
 std::vector<unsigned char> symmetry_support_mask(const Geodesic_distance_matrix& D,
                                                  const std::vector<std::size_t>& curve_vertices,
                                                  const std::vector<std::pair<std::size_t, std::size_t>>& landmarks,
-                                                 const Symmetry_tolerance& tol)
+                                                 const Symmetry_tolerance& tol,
+                                                 std::vector<std::size_t>* partner = nullptr)
 {
   const std::size_t nv = D.number_of_vertices();
   std::vector<unsigned char> mask(nv, 0);
   for(std::size_t v : curve_vertices) mask[v] = 1;
+  if(partner) partner->assign(nv, Mirror_matcher::none);
   if(landmarks.empty()) return mask;
   const Mirror_matcher mm(D, landmarks);
   std::vector<std::size_t> all(nv), best;
@@ -285,6 +288,7 @@ std::vector<unsigned char> symmetry_support_mask(const Geodesic_distance_matrix&
   mm.template best_partners<ConcurrencyTag>(all, all, best, residual);
   for(std::size_t x = 0; x < nv; ++x)
     if(mm.within(residual[x], x, tol)) mask[x] = 1;
+  if(partner) partner->swap(best);
   return mask;
 }
 

@@ -52,12 +52,13 @@ struct Region_settings
   double ignition = 0.;
 };
 
-/// Vertex labels of the grass-fire regions of the final curves: the growth
-/// of the refinement, each curve with its final support, and its support
-/// mask computed with landmarks from its final eligible pairs.
+/// What the region growing needs of the final curves: each curve with its
+/// final support, and its support mask computed with landmarks from its
+/// final eligible pairs.
 template <class ConcurrencyTag>
-Region_growing_result curve_regions(const Curves_mesh& m, const Geodesic_distance_matrix& D,
-                                    const std::vector<const Irsa_curve*>& curves, const Region_settings& st)
+std::vector<Region_seed_curve> final_curve_seeds(const Geodesic_distance_matrix& D,
+                                                 const std::vector<const Irsa_curve*>& curves,
+                                                 const Region_settings& st)
 {
   std::vector<Region_seed_curve> seeds(curves.size());
   const std::vector<unsigned char> everywhere(D.number_of_vertices(), 1);
@@ -73,7 +74,50 @@ Region_growing_result curve_regions(const Curves_mesh& m, const Geodesic_distanc
                                                            st.number_of_landmarks, st.symmetry);
     seeds[c].mask = symmetry_support_mask<ConcurrencyTag>(D, seeds[c].vertices, landmarks, st.symmetry);
   }
-  return grow_regions(m, seeds, st.ignition);
+  return seeds;
+}
+
+/// Vertex labels of the grass-fire regions of the final curves: the growth
+/// of the refinement, all curves at once (a partition).
+template <class ConcurrencyTag>
+Region_growing_result curve_regions(const Curves_mesh& m, const Geodesic_distance_matrix& D,
+                                    const std::vector<const Irsa_curve*>& curves, const Region_settings& st)
+{
+  return grow_regions(m, final_curve_seeds<ConcurrencyTag>(D, curves, st), st.ignition);
+}
+
+/// Vertex labels by prominence, for the symmetric map: the curves in order
+/// (best first), each growing alone into the vertices its reflection holds at
+/// and no better curve took. Why not the partition: a nested symmetry (a leg's
+/// own axis) claims its part in the partition, but at a vertex of that part
+/// the reflection of the whole (the body's, mapping the leg to the other leg)
+/// is the more prominent symmetry, the one a symmetric map should follow.
+/// With a single curve both labellings are the same.
+template <class ConcurrencyTag>
+Region_growing_result prominence_regions(const Curves_mesh& m, const Geodesic_distance_matrix& D,
+                                         const std::vector<const Irsa_curve*>& curves, const Region_settings& st)
+{
+  std::vector<Region_seed_curve> seeds = final_curve_seeds<ConcurrencyTag>(D, curves, st);
+  Region_growing_result r;
+  r.label.assign(m.number_of_vertices, -1);
+  r.time.assign(m.number_of_vertices, std::numeric_limits<double>::infinity());
+  for(std::size_t c = 0; c < seeds.size(); ++c)
+  {
+    std::vector<Region_seed_curve> one(1);
+    one[0].mask = seeds[c].mask;
+    for(std::size_t v = 0; v < m.number_of_vertices; ++v)
+      if(r.label[v] >= 0) one[0].mask[v] = 0;
+    for(std::size_t i = 0; i < seeds[c].vertices.size(); ++i)
+      if(r.label[seeds[c].vertices[i]] < 0)
+      {
+        one[0].vertices.push_back(seeds[c].vertices[i]);
+        one[0].support.push_back(seeds[c].support[i]);
+      }
+    const Region_growing_result g = grow_regions(m, one, st.ignition);
+    for(std::size_t v = 0; v < m.number_of_vertices; ++v)
+      if(g.label[v] == 0) { r.label[v] = int(c); r.time[v] = g.time[v]; }
+  }
+  return r;
 }
 
 /// Face labels from vertex labels: the label shared by at least two of the

@@ -29,11 +29,10 @@
 // The fast per-pair voting of Alg. 1-2. It computes exactly what the literal
 // reference (reference_voting.h) computes, in another order:
 // - beta(a,b): vertex blocks of 16 (a Voting_index, which depends only on
-//   the mesh and D and can be shared by several transforms, holds them, the
-//   rows of D in block order, and per-block bounds with the distances to each
-//   block's first vertex). Per pair, the sign of f = d(a,.) - d(b,.) over a
-//   block comes from the bound or from one contiguous read of the block, as
-//   bit masks; crossing edges are found with the masks (inside a block: a
+//   the mesh and D and can be shared by several transforms, holds them and
+//   per-block bounds with the distances to each block's first vertex). Per
+//   pair, the sign of f = d(a,.) - d(b,.) over a block comes from the bound
+//   or from a read of the block's vertices in the rows of D, as bit masks; crossing edges are found with the masks (inside a block: a
 //   per-vertex neighbour mask; between blocks: only on the blocks that are
 //   mixed or next to a block of the opposite sign), and f is only read again
 //   at the ends of the crossing edges;
@@ -150,7 +149,6 @@ public:
   // pairs of adjacent blocks (B1 < B2), flat
   std::vector<std::uint32_t> block_pairs_;
   std::vector<std::uint32_t> position_; // position of each vertex in the block order
-  std::vector<float> block_rows_;   // the rows of D, columns in the block order
   std::vector<float> block_info_;   // (d(x, first vertex of B), L(x, B)), sample-major
   std::vector<float> rows_;         // dss, columns in the order rank_
   std::vector<std::uint32_t> rank_; // position of each sample in a spatially coherent order
@@ -278,26 +276,25 @@ private:
     bpairs.erase(std::unique(bpairs.begin(), bpairs.end()), bpairs.end());
     for(const auto& bp : bpairs) { block_pairs_.push_back(bp.first); block_pairs_.push_back(bp.second); }
 
-    // The rows of D with their columns in block order (a block is then one or
-    // two cache lines of a row), and the bounds, from them
+    // The bounds, read from the rows of D. (A copy of D in block order would
+    // make the reads of a block contiguous, but its allocation and copy cost
+    // more than they save: page faults on n x V floats, then reads of a few
+    // blocks per pair.)
     const std::size_t n = number_of_samples_;
     const float inf = std::numeric_limits<float>::infinity();
-    block_rows_.resize(n * nv);
-    block_info_.assign(2 * n * nblocks, 0.f);
+    block_info_.resize(2 * n * nblocks);
     for_each_index(n, [&](std::size_t x) {
       const float* r = D_->row(x);
-      float* out = block_rows_.data() + x * nv;
-      for(std::size_t k = 0; k < nv; ++k)
-        out[k] = r[block_vertices_[k]];
+      const std::uint32_t* bv = block_vertices_.data();
       float* info = block_info_.data() + 2 * x * nblocks;
       for(std::size_t blk = 0; blk < nblocks; ++blk)
       {
-        const float dc = out[block_offsets_[blk]];
+        const float dc = r[bv[block_offsets_[blk]]];
         float bound = 0.f;
         for(std::size_t k = block_offsets_[blk] + 1; k < block_offsets_[blk + 1]; ++k)
         {
           // |d(x,v) - d(x,c)|; infinite if exactly one is finite or d(x,v) is NaN
-          const float dv = out[k];
+          const float dv = r[bv[k]];
           const bool mismatch = (std::isfinite(dc) != std::isfinite(dv)) || std::isnan(dv);
           const float e = mismatch ? inf : (std::isfinite(dv) ? std::abs(dv - dc) : 0.f);
           bound = (std::max)(bound, e);
@@ -597,18 +594,17 @@ private:
   {
     const Voting_index& ix = *ix_;
     const std::size_t nblocks = ix.number_of_blocks();
-    const std::size_t nv = s_.mesh.number_of_vertices;
     const std::uint32_t* offsets = ix.block_offsets_.data();
     const std::uint32_t* bverts = ix.block_vertices_.data();
     // (d(x, c), L(x, B)) for the first vertex c of each block B, for x = a and b
     const float* ia = ix.block_info_.data() + 2 * a * nblocks;
     const float* ib = ix.block_info_.data() + 2 * b * nblocks;
     // f is evaluated where needed: at the block centres from the table, and at
-    // the vertices of the few blocks near the bisector from the rows of D in
-    // block order (f at position k is f at vertex bverts[k])
-    const float* pa = ix.block_rows_.data() + a * nv;
-    const float* pb = ix.block_rows_.data() + b * nv;
-    auto f = [&](std::size_t k) { return bisector_value(pa, pb, k); };
+    // the vertices of the few blocks near the bisector from the rows of D
+    // (f at position k is f at vertex bverts[k])
+    const float* pa = s_.D->row(a);
+    const float* pb = s_.D->row(b);
+    auto f = [&](std::size_t k) { return bisector_value(pa, pb, bverts[k]); };
     unsigned char* status_of = sc.block_bits.data();
     unsigned char* scan = sc.block_scan.data();
     // per block, which of its vertices (bit = position in the block) have

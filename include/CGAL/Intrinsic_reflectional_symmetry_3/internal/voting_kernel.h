@@ -78,6 +78,18 @@ inline int ctz(std::uint32_t x)
 #endif
 }
 
+// index of the lowest set bit of x != 0
+inline int ctz64(std::uint64_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctzll(x);
+#else
+  int k = 0;
+  while(!(x & 1u)) { x >>= 1; ++k; }
+  return k;
+#endif
+}
+
 // f(i) for i in [0, n), in parallel if `parallel`; f must be thread-safe
 template <class F>
 void for_each_index(bool parallel, std::size_t n, F f)
@@ -319,6 +331,7 @@ public:
     std::vector<unsigned char> block_bits;    // beta: sign status of each block
     std::vector<unsigned char> block_scan;    // beta: blocks whose edges are tested
     std::vector<std::uint32_t> found;         // beta, with repetitions
+    std::vector<std::uint64_t> vertex_bits;   // beta: a bit per vertex, zero between calls
     std::vector<std::uint32_t> negative_mask, positive_mask, zero_mask; // beta: signs of f per block
     std::vector<std::uint32_t> sample_stamp;  // membership in U
     std::vector<std::uint32_t> sample_slot;   // index in U
@@ -338,7 +351,7 @@ public:
     std::vector<std::size_t> kept;            // indices into candidates
     std::vector<std::size_t> cursor;          // grid construction
     std::vector<std::uint32_t> ss, ts;        // the kept pairs' samples
-    std::vector<std::uint32_t> counts, order, os, ot, rp, rq, active, axial_counts;
+    std::vector<std::uint32_t> counts, order, os, ot, rp, rq, active, axial_counts, line_start;
     std::vector<unsigned char> axial_pass;
     std::vector<std::size_t> compared;
     std::vector<std::uint32_t> pass;          // support: boundary positions that pass
@@ -421,6 +434,7 @@ public:
     sc.negative_mask.assign(ix_->number_of_blocks(), 0);
     sc.positive_mask.assign(ix_->number_of_blocks(), 0);
     sc.zero_mask.assign(ix_->number_of_blocks(), 0);
+    sc.vertex_bits.assign((s_.mesh.number_of_vertices + 63) / 64, 0);
     sc.sample_stamp.assign(s_.number_of_samples, 0);
     sc.sample_slot.assign(s_.number_of_samples, 0);
     sc.dist_to_m.assign(s_.number_of_samples, 0.f);
@@ -714,11 +728,24 @@ private:
           push(endpoint(ext[4 * k], ext[4 * k + 1]));
       }
     }
-    std::sort(found.begin(), found.begin() + nf);
-    boundary.clear();
+    // sorted and without repetitions: through a bit set of the vertices
+    // (a sweep of V / 64 words is cheaper than sorting the found vertices)
+    std::uint64_t* bits = sc.vertex_bits.data();
+    std::size_t lo = sc.vertex_bits.size(), hi = 0;
     for(std::size_t k = 0; k < nf; ++k)
-      if(k == 0 || found[k] != found[k - 1])
-        boundary.push_back(found[k]);
+    {
+      const std::size_t w = found[k] / 64;
+      bits[w] |= std::uint64_t(1) << (found[k] % 64);
+      lo = (std::min)(lo, w);
+      hi = (std::max)(hi, w);
+    }
+    boundary.clear();
+    for(std::size_t w = lo; w <= hi && nf > 0; ++w)
+    {
+      for(std::uint64_t x = bits[w]; x != 0; x &= x - 1)
+        boundary.push_back(64 * w + std::size_t(ctz64(x)));
+      bits[w] = 0;
+    }
   }
 
   // Pairs {p,q} (p on a's side) that are similar and pass the three
@@ -999,11 +1026,17 @@ private:
     // rows stay in cache), in the order of their first sample's column; a
     // pair leaves as soon as its verdict is certain, which is the verdict of
     // the full count.
+    // (A counting sort by the cache line of the column: the order only
+    // matters for locality, and a comparison sort cost more than it saved.)
     std::vector<std::uint32_t>& active = sc.active;
     active.resize(ne);
-    for(std::size_t k = 0; k < ne; ++k) active[k] = std::uint32_t(k);
-    std::sort(active.begin(), active.end(), [&](std::uint32_t x, std::uint32_t y)
-              { return rp[x] < rp[y] || (rp[x] == rp[y] && x < y); });
+    {
+      std::vector<std::uint32_t>& start = sc.line_start;
+      start.assign(n / 16 + 2, 0);
+      for(std::size_t k = 0; k < ne; ++k) ++start[rp[k] / 16 + 1];
+      for(std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+      for(std::size_t k = 0; k < ne; ++k) active[start[rp[k] / 16]++] = std::uint32_t(k);
+    }
     std::vector<std::uint32_t>& c = sc.axial_counts;
     c.assign(ne, 0);
     std::vector<unsigned char>& pass = sc.axial_pass;

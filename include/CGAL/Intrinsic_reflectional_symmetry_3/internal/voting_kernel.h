@@ -334,6 +334,7 @@ public:
     std::vector<std::uint64_t> vertex_bits;   // beta: a bit per vertex, zero between calls
     std::vector<std::uint32_t> negative_mask, positive_mask, zero_mask; // beta: signs of f per block
     std::vector<std::uint32_t> sample_stamp;  // membership in U
+    std::vector<std::uint64_t> sample_bits;   // U as a bit set, zero between calls
     std::vector<std::uint32_t> sample_slot;   // index in U
     std::uint32_t sstamp = 0;
     std::vector<float> dist_to_m;             // D(x, m) for every sample x
@@ -436,6 +437,7 @@ public:
     sc.zero_mask.assign(ix_->number_of_blocks(), 0);
     sc.vertex_bits.assign((s_.mesh.number_of_vertices + 63) / 64, 0);
     sc.sample_stamp.assign(s_.number_of_samples, 0);
+    sc.sample_bits.assign((s_.number_of_samples + 63) / 64, 0);
     sc.sample_slot.assign(s_.number_of_samples, 0);
     sc.dist_to_m.assign(s_.number_of_samples, 0.f);
     sc.coordinates.assign(2 * s_.number_of_samples, 0.f);
@@ -900,15 +902,22 @@ private:
       std::fill(sc.sample_stamp.begin(), sc.sample_stamp.end(), 0);
       sc.sstamp = 1;
     }
+    std::uint64_t* bits = sc.sample_bits.data();
     for(const auto& c : sc.candidates)
     {
       sc.sample_stamp[c.p] = sc.sstamp;
       sc.sample_stamp[c.q] = sc.sstamp;
+      bits[c.p / 64] |= std::uint64_t(1) << (c.p % 64);
+      bits[c.q / 64] |= std::uint64_t(1) << (c.q % 64);
     }
-    // U in increasing order, by a sweep of the stamps (cheaper than a sort)
-    for(std::size_t x = 0; x < s_.number_of_samples; ++x)
-      if(sc.sample_stamp[x] == sc.sstamp)
-        sc.points.push_back(x);
+    // U in increasing order, by a sweep of a bit set (cheaper than a sort,
+    // and than a sweep of the stamps)
+    for(std::size_t w = 0; w < sc.sample_bits.size(); ++w)
+    {
+      for(std::uint64_t x = bits[w]; x != 0; x &= x - 1)
+        sc.points.push_back(64 * w + std::size_t(ctz64(x)));
+      bits[w] = 0;
+    }
     for(std::size_t i = 0; i < sc.points.size(); ++i)
       sc.sample_slot[sc.points[i]] = i;
 
@@ -999,16 +1008,41 @@ private:
     // popularity of each compared pair: its agreements with the first 16
     // compared pairs (the relation is symmetric up to the asymmetry of D;
     // 16 orders about as well as 32 at half the cost)
-    const std::size_t first = (std::min)(nc, std::size_t(16));
+    const std::size_t chunk = 16;
+    // agreements of the pair whose samples are at columns (cp, cq) with the
+    // `chunk` pairs whose rows are srow, trow: loads first, then the tests in
+    // a loop the compiler vectorises
+    auto agreements = [&](const float* const* srow, const float* const* trow, std::uint32_t cp, std::uint32_t cq) {
+      float sp[chunk], tq[chunk], sq[chunk], tp[chunk];
+      for(std::size_t l = 0; l < chunk; ++l)
+      {
+        sp[l] = srow[l][cp]; tq[l] = trow[l][cq];
+        sq[l] = srow[l][cq]; tp[l] = trow[l][cp];
+      }
+      std::uint32_t a = 0;
+      for(std::size_t l = 0; l < chunk; ++l)
+        a += std::uint32_t(tol(sp[l], tq[l]) & tol(sq[l], tp[l]));
+      return a;
+    };
+    const std::size_t first = (std::min)(nc, chunk);
     std::vector<std::uint32_t>& count = sc.counts;
     count.assign(nc, 0);
-    for(std::size_t i = 0; i < nc; ++i)
+    if(first == chunk)
     {
-      std::uint32_t c = 0;
-      for(std::size_t l = 0; l < first; ++l)
-        c += agree(sc.compared[i], ss[sc.compared[l]], ts[sc.compared[l]]);
-      count[i] = c;
+      const float* srow[chunk];
+      const float* trow[chunk];
+      for(std::size_t l = 0; l < chunk; ++l) { srow[l] = row(ss[sc.compared[l]]); trow[l] = row(ts[sc.compared[l]]); }
+      for(std::size_t i = 0; i < nc; ++i)
+        count[i] = agreements(srow, trow, rp[sc.compared[i]], rq[sc.compared[i]]);
     }
+    else
+      for(std::size_t i = 0; i < nc; ++i)
+      {
+        std::uint32_t c = 0;
+        for(std::size_t l = 0; l < first; ++l)
+          c += agree(sc.compared[i], ss[sc.compared[l]], ts[sc.compared[l]]);
+        count[i] = c;
+      }
     // the compared pairs are visited least popular first: they disagree with
     // most pairs and settle the failing ones (most) early
     std::vector<std::uint32_t>& order = sc.order;
@@ -1042,7 +1076,6 @@ private:
     std::vector<unsigned char>& pass = sc.axial_pass;
     pass.assign(ne, needed == 0 ? 1 : 0);
     if(needed == 0) active.clear();
-    const std::size_t chunk = 16;
     for(std::size_t l0 = 0; l0 < nc && !active.empty(); l0 += chunk)
     {
       const std::size_t l1 = (std::min)(nc, l0 + chunk);
@@ -1057,17 +1090,7 @@ private:
         const std::uint32_t cp = rp[k], cq = rq[k];
         std::uint32_t ck = c[k];
         if(w == chunk)
-        {
-          // loads first, then the tests in a loop the compiler vectorises
-          float sp[chunk], tq[chunk], sq[chunk], tp[chunk];
-          for(std::size_t l = 0; l < chunk; ++l)
-          {
-            sp[l] = srow[l][cp]; tq[l] = trow[l][cq];
-            sq[l] = srow[l][cq]; tp[l] = trow[l][cp];
-          }
-          for(std::size_t l = 0; l < chunk; ++l)
-            ck += std::uint32_t(tol(sp[l], tq[l]) & tol(sq[l], tp[l]));
-        }
+          ck += agreements(srow, trow, cp, cq);
         else
           for(std::size_t l = l0; l < l1; ++l)
             ck += agree(k, os[l], ot[l]);

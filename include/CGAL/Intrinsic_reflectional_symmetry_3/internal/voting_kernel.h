@@ -32,10 +32,11 @@
 //   the mesh and D and can be shared by several transforms, holds them and
 //   per-block bounds with the distances to each block's first vertex). Per
 //   pair, the sign of f = d(a,.) - d(b,.) over a block comes from the bound
-//   or from a read of the block's vertices in the rows of D, as bit masks; crossing edges are found with the masks (inside a block: a
-//   per-vertex neighbour mask; between blocks: only on the blocks that are
-//   mixed or next to a block of the opposite sign), and f is only read again
-//   at the ends of the crossing edges;
+//   or from a read of the block's vertices in the rows of D, as bit masks;
+//   crossing edges are found with the masks (inside a block: a per-vertex
+//   neighbour mask; between blocks: only on the blocks that are mixed or
+//   next to a block of the opposite sign), and f is only read again at the
+//   ends of the crossing edges;
 // - the caller groups the voting pairs by midpoint m, so that the column
 //   D(., m) (a cache miss per sample) is read once per midpoint;
 // - the three m'-independent distance tests: d(p,m) ~ d(q,m), which does not

@@ -119,21 +119,28 @@ void copy_result(const Repair_core_result& r, OutputMesh& out, Part_repair_repor
 /// Orphan components (plus what they enclose) of at least 0.5 % of the area
 /// are parts to mirror when the reflection across the mirror plane sends at
 /// least half of their area off the surface (farther than tau) and outside
-/// the shape: this extrinsic check rejects regions where the map merely fails
-/// (a head maps onto itself), the intrinsic orphan test rejects limbs that
-/// only have another pose on the other side.
+/// the shape, when they lie on one side of the plane (at most 5 % of their
+/// area across it) and away from the axis: this extrinsic check rejects
+/// regions where the map merely fails (a head maps onto itself), the
+/// intrinsic orphan test rejects limbs that only have another pose on the
+/// other side.
 ///
 /// **Placement.** The part (its base, the part's border, must be one loop)
 /// is reflected across the best-fitting plane of the curve (paper's
-/// heuristic), then aligned by trimmed rigid ICP (`Eigen::umeyama()`, nearest
-/// neighbours by a CGAL kd-tree) of its reflected collar (the band of width
-/// 3 tau outside its base) onto the other side.
+/// heuristic), refined with the map's pairs that agree with it (a pruned
+/// curve can be nearly a line, which leaves the plane free to turn about
+/// it), then aligned by trimmed rigid ICP (`Eigen::umeyama()`, closest
+/// surface points by a CGAL AABB tree) of its reflected collar (the band from
+/// 1.5 to 4 tau inside its base: nearer the base, the reflection lands on the
+/// cut) onto the other side's surface, caps excluded.
 ///
 /// **Stitching.** The surface the copy replaces (the cap, from a gap of half
 /// the base radius before the copy's base, within 1.5 base radii of its axis)
 /// is removed; the two loops are bridged by a strip of triangles, refined
 /// (`CGAL::Polygon_mesh_processing::refine()`) and faired with the loops
-/// (`CGAL::Polygon_mesh_processing::fair()`, in place of the paper's Poisson interpolation).
+/// (`CGAL::Polygon_mesh_processing::fair()`, in place of the paper's Poisson
+/// interpolation); if that strip folds, it is faired inside only, then left
+/// plain (`seams_faired` false).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// \tparam VertexPartnerMap a model of `ReadablePropertyMap`, vertex descriptor to a signed
@@ -235,6 +242,97 @@ Part_repair_report repair_missing_parts(const TriangleMesh& tm, const Geodesic_d
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// Part repair from the IRSA transform: the curves are extracted
+/// (`extract_irsa_curves()`, `np` passed on) and tried as by the overload
+/// taking all curves. When none detects a missing part, tau is set to zero
+/// near the curves tried (within `vicinity_radius` mean sample spacings,
+/// along the mesh edges, as the extraction does near a selected boundary)
+/// and the curves are extracted again, at most `maximum_number_of_rounds` times.
+///
+/// Why: the extraction keeps the curves of a partition of the shape and
+/// drops a curve whose reflection holds mostly where a better ranked one's
+/// holds. On a human missing a leg, or two limbs, the front-back symmetry
+/// survives the damage, ranks first and covers the body, so the left-right
+/// curve, the one whose map reveals the missing parts, is dropped as
+/// dominated. Once the front-back curve is ruled out (it detects nothing),
+/// its tau is removed and the left-right curve comes first.
+///
+/// \tparam VertexTauMap a model of `ReadablePropertyMap`, vertex descriptor to
+///         the IRSA transform (as filled by `compute_irsa_transform()`)
+/// \param voting the result of `compute_irsa_transform()` on `tm` and `D`
+/// \param tau the IRSA transform
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{maximum_number_of_rounds}
+///     \cgalParamDescription{the most extractions (the first one included)}
+///     \cgalParamType{std::size_t >= 1}
+///     \cgalParamDefault{3}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vicinity_radius}
+///     \cgalParamDescription{the suppression radius, in mean sample spacings (the extraction's parameter)}
+///     \cgalParamType{double >= 0}
+///     \cgalParamDefault{3.0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{missing_part_threshold, and the parameters of `extract_irsa_curves()` and
+///     `symmetric_vertex_map()`}
+///     \cgalParamDescription{passed on}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the report (`curve` is the index of the curve used in its round's extraction)
+/// \throws Input_error as the overload taking all curves, or if `voting` does not match `tm` and `D`
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh, typename VertexTauMap,
+          typename OutputMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Part_repair_report repair_missing_parts(const TriangleMesh& tm, const Geodesic_distance_matrix& D,
+                                        const Irsa_voting_result& voting, const VertexTauMap& tau, OutputMesh& out,
+                                        const CGAL_NP_CLASS& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  namespace inp = Intrinsic_reflectional_symmetry_3::internal_np;
+  internal::check_closed_for_repair(tm, np);
+  const std::size_t rounds = choose_parameter(get_parameter(np, inp::maximum_number_of_rounds), std::size_t(3));
+  const double radius = choose_parameter(get_parameter(np, inp::vicinity_radius), internal::default_vicinity_radius);
+  if(rounds < 1) throw Input_error(Input_problem::invalid_parameter, "maximum_number_of_rounds must be >= 1");
+  if(!(radius >= 0.) || !std::isfinite(radius))
+    throw Input_error(Input_problem::invalid_parameter, "vicinity_radius must be finite and >= 0");
+  const internal::Repair_soup s = internal::mesh_to_repair_soup(tm, np);
+  const auto nb = internal::soup_neighbours(s);
+  const double unit = voting.mean_sample_spacing > 0. ? voting.mean_sample_spacing : internal::soup_mean_edge_length(s);
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  std::vector<double> t(s.points.size(), 0.);
+  for(auto v : vertices(tm)) t[std::size_t(get(vim, v))] = double(get(tau, v));
+  auto tmap = get(CGAL::dynamic_vertex_property_t<double>(), tm);
+  std::string first_error;
+  for(std::size_t round = 0; round < rounds; ++round)
+  {
+    for(auto v : vertices(tm)) put(tmap, v, t[std::size_t(get(vim, v))]);
+    std::vector<Irsa_curve> curves;
+    extract_irsa_curves<ConcurrencyTag>(tm, D, voting, tmap, std::back_inserter(curves), np);
+    if(curves.size() > 4) curves.resize(4); // the ones the overload taking all curves tries
+    if(curves.empty()) break;
+    try
+    {
+      Part_repair_report r = repair_missing_parts<ConcurrencyTag>(tm, D, curves, out, np);
+      if(r.number_of_parts > 0) return r;
+    }
+    catch(const Input_error& e)
+    {
+      if(first_error.empty()) first_error = e.what();
+    }
+    // these curves detect nothing: their tau goes, the next axes come first
+    std::vector<std::size_t> sources;
+    for(const Irsa_curve& c : curves)
+      for(std::size_t v : c.vertices()) if(v < t.size()) sources.push_back(v);
+    const std::vector<double> d = internal::soup_dijkstra(s, nb, sources);
+    for(std::size_t v = 0; v < t.size(); ++v) if(d[v] <= radius * unit) t[v] = 0.;
+  }
+  if(!first_error.empty()) throw Input_error(Input_problem::invalid_parameter, first_error);
+  internal::repair_soup_to_mesh(s, out, "part repair");
+  return Part_repair_report();
+}
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// A limb to cut off in the repair protocol (`run_part_repair_protocol()`).
 struct Limb_cut
 {
@@ -278,8 +376,8 @@ struct Part_repair_protocol_result
 /// 3. the package's pipeline runs on it with its defaults
 ///    (`farthest_point_samples()` with `number_of_samples` and `random_seed`,
 ///    `Heat_method_geodesic_oracle`, `sdf_signatures()`, `similar_sample_pairs()`,
-///    `compute_irsa_transform()`, `extract_irsa_curves()`), then
-///    `repair_missing_parts()` with all the curves;
+///    `compute_irsa_transform()`), then `repair_missing_parts()` from the
+///    transform (it extracts the curves, `extract_irsa_curves()`);
 /// 4. the repaired mesh is checked (closed, valid, self-intersections) and
 ///    the distance from every removed vertex to it is measured (AABB tree),
 ///    in % of its bounding-box diagonal.
@@ -337,13 +435,11 @@ Part_repair_protocol_result run_part_repair_protocol(const TriangleMesh& tm, con
   similar_sample_pairs(sig, std::back_inserter(similar));
   auto tau = get(CGAL::dynamic_vertex_property_t<double>(), damaged);
   const Irsa_voting_result voting = compute_irsa_transform(damaged, D, similar, tau, np);
-  std::vector<Irsa_curve> curves;
-  extract_irsa_curves(damaged, D, voting, tau, std::back_inserter(curves), np);
   res.seconds_pipeline = timer.time();
   timer.reset();
   try
   {
-    res.report = repair_missing_parts(damaged, D, curves, repaired, np);
+    res.report = repair_missing_parts(damaged, D, voting, tau, repaired, np);
   }
   catch(const Input_error& err)
   {

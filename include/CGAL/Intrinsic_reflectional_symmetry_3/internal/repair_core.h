@@ -18,14 +18,10 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Polygon_mesh_processing/fair.h>
 #include <CGAL/Polygon_mesh_processing/refine.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/linear_least_squares_fitting_3.h>
-#include <CGAL/property_map.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
@@ -77,27 +73,22 @@ inline void fit_plane(const std::vector<Repair_point>& pts, Repair_vector& n, Re
   n = n / std::sqrt(n.squared_length());
 }
 
-/// Rigid ICP (point to nearest vertex, trimmed): returns T with T(src) ~ target
-/// surface. Rigid fit by Eigen's umeyama(), neighbours by CGAL's kd-tree.
-inline Eigen::Matrix4d rigid_icp(const std::vector<Repair_point>& src, const std::vector<Repair_point>& target,
+/// Rigid ICP (point to closest surface point, trimmed): returns T with T(src)
+/// ~ the target surface (`target`: triangles of a soup). Rigid fit by
+/// Eigen's umeyama(), closest points by a CGAL AABB tree: closest points on
+/// the triangles, not nearest vertices, because the two sides of a scan are
+/// meshed independently and nearest vertices bias the fit by up to half an edge.
+inline Eigen::Matrix4d rigid_icp(const std::vector<Repair_point>& src, const Repair_soup& target,
                                  double max_pair_distance, unsigned iterations, double& rms, double& rms_start)
 {
-  typedef CGAL::Search_traits_3<Repair_kernel>                                   Traits_base;
-  typedef CGAL::Pointer_property_map<Repair_point>::const_type                   Point_map;
-  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Traits_base>       Traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits>                             Search;
-  typedef Search::Tree                                                           Tree;
-  typedef Search::Distance                                                       Distance;
-
+  typedef CGAL::AABB_face_graph_triangle_primitive<Repair_surface> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Repair_kernel, Primitive> > Tree;
   Eigen::Matrix4d T = Eigen::Matrix4d::Identity();
   rms = rms_start = std::numeric_limits<double>::infinity();
-  if(src.size() < 3 || target.size() < 3) return T;
-  Point_map ppmap = CGAL::make_property_map(target);
-  std::vector<std::size_t> ids(target.size());
-  for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
-  Tree tree(ids.begin(), ids.end(), Tree::Splitter(), Traits(ppmap));
-  tree.build();
-  Distance distance(ppmap);
+  if(src.size() < 3 || target.triangles.empty()) return T;
+  const Repair_surface surface = soup_to_surface(compact_soup(target));
+  Tree tree(faces(surface).first, faces(surface).second, surface);
+  tree.accelerate_distance_queries();
 
   for(unsigned it = 0; it < iterations; ++it)
   {
@@ -105,12 +96,9 @@ inline Eigen::Matrix4d rigid_icp(const std::vector<Repair_point>& src, const std
     for(const Repair_point& p0 : src)
     {
       const Eigen::Vector3d p = (T * Eigen::Vector4d(p0.x(), p0.y(), p0.z(), 1.)).head<3>();
-      Search search(tree, Repair_point(p.x(), p.y(), p.z()), 1, 0, true, distance);
-      const auto nn = search.begin();
-      if(nn == search.end()) continue;
-      const double d = std::sqrt(nn->second);
+      const Repair_point q = tree.closest_point(Repair_point(p.x(), p.y(), p.z()));
+      const double d = std::sqrt(CGAL::squared_distance(q, Repair_point(p.x(), p.y(), p.z())));
       if(d > max_pair_distance) continue;
-      const Repair_point& q = target[nn->first];
       pairs.push_back(std::make_pair(d, std::make_pair(p, Eigen::Vector3d(q.x(), q.y(), q.z()))));
     }
     if(pairs.size() < 3) break;
@@ -295,6 +283,39 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   Repair_vector pn;
   Repair_point pc;
   fit_plane(ap, pn, pc);
+  // The curve alone may be nearly a line (a pruned curve along the front of
+  // a body), which leaves the plane free to turn about it: the plane is
+  // refined with the map's pairs that agree with it (reflected within 3 tau
+  // of their partner): normal = main direction of the pair differences,
+  // through the centroid of their midpoints; twice, the second time with
+  // pairs within tau.
+  for(int it = 0; it < 2; ++it)
+  {
+    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d mid = Eigen::Vector3d::Zero();
+    std::size_t used = 0;
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      if(partner[v] < 0 || std::size_t(partner[v]) >= n) continue;
+      const Repair_point& q = s.points[std::size_t(partner[v])];
+      const Repair_vector d = s.points[v] - q;
+      if(d.squared_length() < CGAL::square(2. * e)) continue; // on the axis: no direction
+      if(std::sqrt(CGAL::squared_distance(reflect_point(s.points[v], pn, pc), q)) > (it == 0 ? 3. : 1.) * tau) continue;
+      const Eigen::Vector3d dv(d.x(), d.y(), d.z());
+      M += dv * dv.transpose();
+      const Repair_point m = CGAL::midpoint(s.points[v], q);
+      mid += Eigen::Vector3d(m.x(), m.y(), m.z());
+      ++used;
+    }
+    if(used < 12) break;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(M);
+    const Eigen::Vector3d nn = es.eigenvectors().col(2);
+    Repair_vector n2(nn.x(), nn.y(), nn.z());
+    if(n2 * pn < 0.) n2 = -n2;
+    mid /= double(used);
+    pn = n2;
+    pc = Repair_point(mid.x(), mid.y(), mid.z());
+  }
   result.plane = {{pn.x(), pn.y(), pn.z(), -(pn * (pc - CGAL::ORIGIN))}};
   if(axis.empty()) // geodesic distances to the axis need sources: the vertices nearest the plane
     for(std::size_t v = 0; v < n; ++v)
@@ -349,19 +370,22 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
       const Repair_point q = reflect_point(s.points[v], pn, pc);
       if(inside(q) == CGAL::ON_UNBOUNDED_SIDE && std::sqrt(tree.squared_distance(q)) > tau) off += area[v];
     }
-    // ... and when it lies on one side of the plane, well away from it (a
-    // region straddling the plane, like a turned head, is not a missing limb):
-    // the centroid's distance to the plane is at least 2.5 times the spread
-    double sw = 0., s1 = 0., s2 = 0.;
+    // ... and when it lies on one side of the plane, away from it (a region
+    // straddling the plane, like a turned head, is not a missing limb): at
+    // most 5 % of its area on the other side of the plane than its centroid,
+    // and the centroid farther than tau. (A spread test is not used: a leg's
+    // thickness is comparable to its distance to the plane.)
+    double sw = 0., s1 = 0.;
     for(std::size_t v : comp[c])
     {
-      const double d = (s.points[v] - pc) * pn;
       sw += area[v];
-      s1 += area[v] * d;
-      s2 += area[v] * d * d;
+      s1 += area[v] * ((s.points[v] - pc) * pn);
     }
-    const double mean_d = s1 / sw, spread = std::sqrt((std::max)(0., s2 / sw - mean_d * mean_d));
-    const bool one_sided = std::abs(mean_d) >= 2.5 * spread && std::abs(mean_d) > tau;
+    const double mean_d = s1 / sw;
+    double across = 0.;
+    for(std::size_t v : comp[c])
+      if(((s.points[v] - pc) * pn) * mean_d < 0.) across += area[v];
+    const bool one_sided = across <= 0.05 * sw && std::abs(mean_d) > tau;
     // ... and when it is away from the axis (a limb, not the middle of the shape)
     double g_min = std::numeric_limits<double>::infinity();
     for(std::size_t v : comp[c]) g_min = (std::min)(g_min, g[v]);
@@ -391,8 +415,11 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     for(std::size_t v : O)
       if(partner[v] >= 0 && std::size_t(partner[v]) < n)
         for(std::size_t w : nb[std::size_t(partner[v])]) hub[w] = hub[std::size_t(partner[v])] = 1;
-  std::vector<Repair_point> target;
-  for(std::size_t v = 0; v < n; ++v) if(!in_part[v] && !hub[v]) target.push_back(s.points[v]);
+  Repair_soup target;
+  target.points = s.points;
+  for(const Repair_triangle& t : s.triangles)
+    if(!in_part[t[0]] && !in_part[t[1]] && !in_part[t[2]] && !hub[t[0]] && !hub[t[1]] && !hub[t[2]])
+      target.triangles.push_back(t);
 
   // 3-5 with, for every part, the ICP result of the better start (attempt 0)
   // or of the other one (attempt 1, tried when attempt 0 cannot be stitched cleanly)
@@ -417,12 +444,17 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
                         repair_failure("the base of a part to mirror is not one simple loop"), O.front());
     const std::vector<std::size_t>& base = loops.front();
 
-    // ICP between the reflected collar (a band outside the part's base) and the other side
+    // ICP between the reflected collar (a band outside the part's base) and
+    // the other side. The band starts 1.5 tau inside the base: the base is
+    // where the map starts collapsing the part onto the cap, so the first tau
+    // or so of the band reflects onto the cut, where the other side has
+    // nothing (or a cap) to fit; it ends 4 tau inside, wide enough to lock
+    // the copy against sliding and turning about the limb's axis.
     const std::vector<double> dO = soup_dijkstra(s, nb, base);
     std::vector<Repair_point> collar;
-    std::vector<std::size_t> collar_vertices(base.begin(), base.end());
+    std::vector<std::size_t> collar_vertices;
     for(std::size_t v = 0; v < n; ++v)
-      if(!in_part[v] && dO[v] > 0. && dO[v] <= 3. * tau) collar_vertices.push_back(v);
+      if(!in_part[v] && dO[v] > 1.5 * tau && dO[v] <= 4. * tau) collar_vertices.push_back(v);
     for(std::size_t v : collar_vertices) collar.push_back(reflect_point(s.points[v], pn, pc));
     // initial position: the rigid motion taking the reflected collar onto the
     // mirror partners of its vertices (the correspondence of the paper's
@@ -574,27 +606,41 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
 
   // 5. Seam: refine the bridge triangles and fair them with a ring on each side
   //    (CGAL's fairing: the harmonic-type interpolation the paper does with Poisson)
-  Repair_surface m = soup_to_surface(compacted);
-  std::vector<Repair_surface::Face_index> bridge;
-  for(std::size_t f = first_bridge; f < compacted.triangles.size(); ++f)
-    bridge.push_back(Repair_surface::Face_index(static_cast<Repair_surface::size_type>(f)));
-  std::vector<Repair_surface::Face_index> new_faces;
-  std::vector<Repair_surface::Vertex_index> fair_set;
-  PMP::refine(m, bridge, std::back_inserter(new_faces), std::back_inserter(fair_set));
-  std::vector<char> in_fair(num_vertices(m), 0);
-  for(auto v : fair_set) in_fair[std::size_t(v)] = 1;
-  for(std::size_t v : seam)
-  {
-    const std::ptrdiff_t w = old_to_new[v];
-    if(w >= 0 && !in_fair[std::size_t(w)]) { in_fair[std::size_t(w)] = 1; fair_set.push_back(Repair_surface::Vertex_index(static_cast<Repair_surface::size_type>(w))); }
-  }
-  const bool faired = PMP::fair(m, fair_set);
-  result.faired.assign(placed.size(), faired);
-  std::string defect = mesh_defect(m);
+  // Variants, the first one without defect is kept: refined and faired with
+  // the two loops; faired inside the strip only (the loops stay); the plain
+  // strip. A faired strip can fold where the loops are close and skewed.
+  Repair_surface m;
+  std::string defect;
   const std::size_t kept_end = first_bridge;
-  if(defect.empty() && self_intersects_new(m, [copy_faces, kept_end](Repair_surface::Face_index f) {
-       return std::size_t(f) < copy_faces || std::size_t(f) >= kept_end; }))
-    defect = "self-intersecting (a copied or stitched face crosses the surface)";
+  for(int variant = 0; variant < 3; ++variant)
+  {
+    m = soup_to_surface(compacted);
+    bool faired = false;
+    if(variant < 2)
+    {
+      std::vector<Repair_surface::Face_index> bridge;
+      for(std::size_t f = first_bridge; f < compacted.triangles.size(); ++f)
+        bridge.push_back(Repair_surface::Face_index(static_cast<Repair_surface::size_type>(f)));
+      std::vector<Repair_surface::Face_index> new_faces;
+      std::vector<Repair_surface::Vertex_index> fair_set;
+      PMP::refine(m, bridge, std::back_inserter(new_faces), std::back_inserter(fair_set));
+      std::vector<char> in_fair(num_vertices(m), 0);
+      for(auto v : fair_set) in_fair[std::size_t(v)] = 1;
+      if(variant == 0)
+        for(std::size_t v : seam)
+        {
+          const std::ptrdiff_t w = old_to_new[v];
+          if(w >= 0 && !in_fair[std::size_t(w)]) { in_fair[std::size_t(w)] = 1; fair_set.push_back(Repair_surface::Vertex_index(static_cast<Repair_surface::size_type>(w))); }
+        }
+      faired = fair_set.empty() || PMP::fair(m, fair_set);
+    }
+    result.faired.assign(placed.size(), faired);
+    defect = mesh_defect(m);
+    if(defect.empty() && self_intersects_new(m, [copy_faces, kept_end](Repair_surface::Face_index f) {
+         return std::size_t(f) < copy_faces || std::size_t(f) >= kept_end; }))
+      defect = "self-intersecting (a copied or stitched face crosses the surface)";
+    if(defect.empty()) break;
+  }
   if(!defect.empty())
     throw Input_error(Input_problem::invalid_parameter, repair_failure("the repaired surface would be " + defect));
   Repair_soup r;

@@ -132,7 +132,8 @@ void copy_result(const Repair_core_result& r, OutputMesh& out, Part_repair_repor
 /// it), then aligned by trimmed rigid ICP (`Eigen::umeyama()`, closest
 /// surface points by a CGAL AABB tree) of its reflected collar (the band from
 /// 1.5 to 4 tau inside its base: nearer the base, the reflection lands on the
-/// cut) onto the other side's surface, caps excluded.
+/// cut) onto the other side's surface, caps excluded; if no copy so placed
+/// can be attached, with the band from the base to 3 tau (posed limbs).
 ///
 /// **Stitching.** The surface the copy replaces (the cap, from a gap of half
 /// the base radius before the copy's base, within 1.5 base radii of its axis)

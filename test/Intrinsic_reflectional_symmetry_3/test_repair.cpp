@@ -18,9 +18,14 @@
 //   comes once the front-back one, which detects nothing, has its tau
 //   removed), but the strip bridging the leg's copy to the body folds
 //   (self-intersection), so the repair throws; DISABLED_.
-// - FAUST: the result is always closed and valid with no new
-//   self-intersection, or a clear Input_error; the 2 % bound holds on few
-//   shapes (posed limbs are copied rigidly): see repair_benchmark.
+// - FAUST (repair_benchmark, 1000 samples): the result is always closed and
+//   valid with no new self-intersection, or a clear Input_error. Within 2 %:
+//   forearm 7 of 19 shapes (000, 006, 010, 040, 050, 060, 090), forearm and
+//   lower leg 1 of 19 (090), so the strict test stays DISABLED_. The
+//   benchmark's oracle column (best rigid mirror copy, from the ground-truth
+//   symmetric map) is 1.2-2.06 % for the forearm: a rigid mirror copy cannot
+//   do much better than 1.6 % on most shapes (posed hands), so the 2 % bar
+//   leaves the placement only ~0.4 % of slack.
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/part_repair.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
@@ -347,7 +352,7 @@ TEST_P(RepairFaust, ClosedManifoldOrClearError)
   }
 }
 
-// the brief's criterion; known failing on most posed shapes (see repair_benchmark)
+// the brief's criterion; known failing on most posed shapes (see the header and repair_benchmark)
 TEST_P(RepairFaust, DISABLED_ForearmAndLowerLegWithinTwoPercent)
 {
   const std::string name = GetParam();

@@ -37,6 +37,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <exception>
 #include <limits>
 #include <set>
 #include <string>
@@ -304,7 +305,7 @@ Part_repair_report repair_missing_parts(const TriangleMesh& tm, const Geodesic_d
   std::vector<double> t(s.points.size(), 0.);
   for(auto v : vertices(tm)) t[std::size_t(get(vim, v))] = double(get(tau, v));
   auto tmap = get(CGAL::dynamic_vertex_property_t<double>(), tm);
-  std::string first_error;
+  std::exception_ptr first_error; // rethrown as is: its message already says why
   for(std::size_t round = 0; round < rounds; ++round)
   {
     for(auto v : vertices(tm)) put(tmap, v, t[std::size_t(get(vim, v))]);
@@ -317,9 +318,9 @@ Part_repair_report repair_missing_parts(const TriangleMesh& tm, const Geodesic_d
       Part_repair_report r = repair_missing_parts<ConcurrencyTag>(tm, D, curves, out, np);
       if(r.number_of_parts > 0) return r;
     }
-    catch(const Input_error& e)
+    catch(const Input_error&) // a part was found but could not be attached: look further
     {
-      if(first_error.empty()) first_error = e.what();
+      if(!first_error) first_error = std::current_exception();
     }
     // these curves detect nothing: their tau goes, the next axes come first
     std::vector<std::size_t> sources;
@@ -328,7 +329,7 @@ Part_repair_report repair_missing_parts(const TriangleMesh& tm, const Geodesic_d
     const std::vector<double> d = internal::soup_dijkstra(s, nb, sources);
     for(std::size_t v = 0; v < t.size(); ++v) if(d[v] <= radius * unit) t[v] = 0.;
   }
-  if(!first_error.empty()) throw Input_error(Input_problem::invalid_parameter, first_error);
+  if(first_error) std::rethrow_exception(first_error);
   internal::repair_soup_to_mesh(s, out, "part repair");
   return Part_repair_report();
 }

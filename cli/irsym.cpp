@@ -270,6 +270,7 @@ void write_symmetry_outputs(const Mesh& input, const Prepared& prepared, const s
 /// checks and returns the report's "repair" object. A repair that is not
 /// possible (Input_error) is reported, not thrown: the tool still succeeds.
 irsym::Json repair_outputs(const Mesh& work, const IRS::Geodesic_distance_matrix& D,
+                           const IRS::Irsa_voting_result& voting, const std::vector<double>& tau,
                            const std::vector<IRS::Irsa_curve>& curves, const std::vector<long>& partner,
                            const fs::path& out, const std::string& up, irsym::Json& files)
 {
@@ -283,8 +284,14 @@ irsym::Json repair_outputs(const Mesh& work, const IRS::Geodesic_distance_matrix
       r = IRS::repair_missing_parts(work, curves.front(),
                                     boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, work)),
                                     repaired);
-    else // each curve needs the map of its curve alone, not the shared partition: computed inside
-      r = IRS::repair_missing_parts(work, D, curves, repaired);
+    // otherwise, or if that curve detects nothing: the overload that tries the
+    // curves, each with its own map, and extracts again without the ones that
+    // detect nothing (a damaged body's left-right curve can rank behind its
+    // front-back one)
+    if(r.number_of_parts == 0)
+      r = IRS::repair_missing_parts(work, D, voting,
+                                    boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
+                                    repaired);
   }
   catch(const IRS::Input_error& e) {
     return j.add("possible", false).add("missing_part_found", false).add("error", std::string(e.what()));
@@ -447,7 +454,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   std::optional<irsym::Json> repair;
   if(opt.repair) {
     log.start("part repair");
-    repair = repair_outputs(work, D, curves, partner, out, opt.up, files);
+    repair = repair_outputs(work, D, voting, tau, curves, partner, out, opt.up, files);
     log.stop();
   }
   emit(tau_in, "transform");

@@ -67,11 +67,12 @@ namespace CGAL {
 namespace Intrinsic_reflectional_symmetry_3 {
 namespace internal {
 
-// index of the lowest set bit of x != 0
-inline int ctz(std::uint32_t x)
+// index of the lowest set bit of x != 0 (x: 32 or 64 bits)
+template <class Unsigned>
+inline int ctz(Unsigned x)
 {
 #if defined(__GNUC__) || defined(__clang__)
-  return __builtin_ctz(x);
+  return sizeof(Unsigned) == 8 ? __builtin_ctzll(std::uint64_t(x)) : __builtin_ctz(std::uint32_t(x));
 #else
   int k = 0;
   while(!(x & 1u)) { x >>= 1; ++k; }
@@ -79,16 +80,17 @@ inline int ctz(std::uint32_t x)
 #endif
 }
 
-// index of the lowest set bit of x != 0
-inline int ctz64(std::uint64_t x)
+// appends the indices of the set bits of words [lo, hi] of `bits` to `out`,
+// in increasing order, and clears those words
+template <class Container>
+void take_set_bits(std::uint64_t* bits, std::size_t lo, std::size_t hi, Container& out)
 {
-#if defined(__GNUC__) || defined(__clang__)
-  return __builtin_ctzll(x);
-#else
-  int k = 0;
-  while(!(x & 1u)) { x >>= 1; ++k; }
-  return k;
-#endif
+  for(std::size_t w = lo; w <= hi; ++w)
+  {
+    for(std::uint64_t x = bits[w]; x != 0; x &= x - 1)
+      out.push_back(64 * w + std::size_t(ctz(x)));
+    bits[w] = 0;
+  }
 }
 
 // f(i) for i in [0, n), in parallel if `parallel`; f must be thread-safe
@@ -743,12 +745,7 @@ private:
       hi = (std::max)(hi, w);
     }
     boundary.clear();
-    for(std::size_t w = lo; w <= hi && nf > 0; ++w)
-    {
-      for(std::uint64_t x = bits[w]; x != 0; x &= x - 1)
-        boundary.push_back(64 * w + std::size_t(ctz64(x)));
-      bits[w] = 0;
-    }
+    if(nf > 0) take_set_bits(bits, lo, hi, boundary);
   }
 
   // Pairs {p,q} (p on a's side) that are similar and pass the three
@@ -913,12 +910,7 @@ private:
     }
     // U in increasing order, by a sweep of a bit set (cheaper than a sort,
     // and than a sweep of the stamps)
-    for(std::size_t w = 0; w < sc.sample_bits.size(); ++w)
-    {
-      for(std::uint64_t x = bits[w]; x != 0; x &= x - 1)
-        sc.points.push_back(64 * w + std::size_t(ctz64(x)));
-      bits[w] = 0;
-    }
+    if(!sc.sample_bits.empty()) take_set_bits(bits, 0, sc.sample_bits.size() - 1, sc.points);
     for(std::size_t i = 0; i < sc.points.size(); ++i)
       sc.sample_slot[sc.points[i]] = i;
 

@@ -425,6 +425,8 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   // on the far band; 2, 3: on the near band), tried in turn until the
   // copies can be stitched cleanly
   const Repair_core_result detected = result;
+  // the fits of each part do not depend on the attempt: computed once
+  std::vector<std::vector<std::pair<double, Eigen::Matrix4d> > > part_fits(part_faces.size());
   auto build = [&](std::size_t attempt) -> Repair_core_result {
   Repair_core_result result = detected;
   // 3. Placement and overlap removal, per part.
@@ -447,9 +449,8 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
 
     // ICP between the reflected collar (a band outside the part's base) and
     // the other side's surface
-    const std::vector<double> dO = soup_dijkstra(s, nb, base);
-    std::vector<std::pair<double, Eigen::Matrix4d> > fits;
-    auto fit_band = [&](double lo, double hi) {
+    std::vector<std::pair<double, Eigen::Matrix4d> >& fits = part_fits[k];
+    auto fit_band = [&](const std::vector<double>& dO, double lo, double hi) {
       const std::size_t f0 = fits.size();
       std::vector<Repair_point> collar;
       std::vector<std::size_t> collar_vertices;
@@ -504,8 +505,12 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     // figure: 0.39 % instead of 2.59 %). Then, if no copy placed so can be
     // attached, the band from the base to 3 tau: on posed limbs (FAUST) the
     // far band fits the upper limb and leaves the copy off the stump.
-    fit_band(1.5, 4.);
-    fit_band(0., 3.);
+    if(fits.empty())
+    {
+      const std::vector<double> dO = soup_dijkstra(s, nb, base);
+      fit_band(dO, 1.5, 4.);
+      fit_band(dO, 0., 3.);
+    }
     const double rms = fits[(std::min)(attempt, fits.size() - 1)].first;
     const Eigen::Matrix4d T = fits[(std::min)(attempt, fits.size() - 1)].second;
     result.icp_rms.push_back(rms);

@@ -67,6 +67,17 @@ struct Curves_mesh
   }
 };
 
+inline double triangle_area(const Curves_mesh& m, const std::array<std::size_t, 3>& f)
+{
+  const auto& a = m.points[f[0]];
+  const auto& b = m.points[f[1]];
+  const auto& c = m.points[f[2]];
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
 template <class TriangleMesh, class NamedParameters>
 Curves_mesh make_curves_mesh(const TriangleMesh& tm, const NamedParameters& np)
 {
@@ -178,16 +189,7 @@ Curves_mesh make_curves_mesh(const TriangleMesh& tm, const NamedParameters& np)
       for(std::size_t v : m.faces[f]) m.vertex_faces[fill[v]++] = f; // f increasing
   }
 
-  for(const auto& f : m.faces)
-  {
-    const auto& a = m.points[f[0]];
-    const auto& b = m.points[f[1]];
-    const auto& c = m.points[f[2]];
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    const double w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-    m.area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  }
+  for(const auto& f : m.faces) m.area += triangle_area(m, f);
   return m;
 }
 

@@ -45,6 +45,9 @@ inline double mean_sample_spacing(const Geodesic_distance_matrix& D)
   return count > 0 ? sum / double(count) : 0.;
 }
 
+/// rounds of local refinement of the dense map (dense_region_map())
+constexpr std::size_t local_map_rounds = 3;
+
 struct Region_settings
 {
   std::size_t number_of_landmarks = 32;
@@ -144,8 +147,9 @@ inline std::vector<int> face_labels(const Curves_mesh& m, const Region_growing_r
 }
 
 /// Dense mirror map of one region: the best partner (curves_mirror.h) of
-/// every vertex of the region among the vertices of the region, made an
-/// involution greedily: the pairs (x, best(x)) in increasing order of E are
+/// every vertex of the region among the vertices of the region, refined under
+/// locally weighted landmarks, made an involution greedily: the pairs
+/// (x, best(x)) in increasing order of the residual are
 /// matched when both ends are free (E is symmetric); a vertex left unmatched
 /// keeps its best partner.
 template <class ConcurrencyTag>
@@ -159,15 +163,51 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
   if(verts.empty()) return;
   std::vector<unsigned char> in_region(m.number_of_vertices, 0);
   for(std::size_t v : verts) in_region[v] = 1;
-  const Mirror_matcher mm(D, curve_landmarks<ConcurrencyTag>(D, curve.a, curve.b, curve.eligible_pairs, in_region,
-                                                             st.number_of_landmarks, st.symmetry));
+  std::vector<std::pair<std::size_t, std::size_t>> landmarks =
+    curve_landmarks<ConcurrencyTag>(D, curve.a, curve.b, curve.eligible_pairs, in_region, st.number_of_landmarks,
+                                    st.symmetry);
   std::vector<std::size_t> best;
   std::vector<double> residual;
-  mm.template best_partners<ConcurrencyTag>(verts, verts, best, residual);
+  Mirror_matcher(D, landmarks).template best_partners<ConcurrencyTag>(verts, verts, best, residual);
 
   // slot of each vertex in `verts`
   std::vector<std::size_t> slot(m.number_of_vertices, Mirror_matcher::none);
   for(std::size_t i = 0; i < verts.size(); ++i) slot[verts[i]] = i;
+
+  // Then under locally weighted landmarks (curves_mirror.h), a few rounds,
+  // each with landmarks taken from the mutual sample pairs of the previous
+  // round's map: the landmarks of the global match carry its distortion on
+  // posed shapes. sigma: three times the spacing of the 2K landmark samples
+  // were they spread evenly over the region.
+  double region_area = 0.;
+  for(const auto& f : m.faces)
+    if(in_region[f[0]] && in_region[f[1]] && in_region[f[2]]) region_area += triangle_area(m, f);
+  const std::size_t ns = D.number_of_sources();
+  for(std::size_t round = 0; round < local_map_rounds && !landmarks.empty(); ++round)
+  {
+    if(round > 0)
+    {
+      // the sample nearest to the partner of each sample of the region
+      std::vector<std::size_t> image(ns, Mirror_matcher::none);
+      for(std::size_t s = 0; s < ns; ++s)
+      {
+        const std::size_t i = slot[D.sources()[s]];
+        if(i == Mirror_matcher::none || best[i] == Mirror_matcher::none) continue;
+        float nearest = std::numeric_limits<float>::infinity();
+        for(std::size_t t = 0; t < ns; ++t)
+          if(D(t, best[i]) < nearest) { nearest = D(t, best[i]); image[s] = t; }
+      }
+      std::vector<std::pair<std::size_t, std::size_t>> pairs;
+      for(std::size_t s = 0; s < ns; ++s)
+        if(image[s] != Mirror_matcher::none && image[s] >= s && image[image[s]] == s) pairs.emplace_back(s, image[s]);
+      if(pairs.size() < landmarks.size()) break;
+      landmarks = spread_pairs(D, pairs, st.number_of_landmarks);
+    }
+    const Mirror_matcher mm(D, landmarks);
+    const double sigma = 3. * std::sqrt(region_area / double(2 * mm.number_of_landmarks()));
+    local_best_partners<ConcurrencyTag>(mm, verts, verts, sigma, best, residual);
+  }
+
   std::vector<std::size_t> by_cost;
   for(std::size_t i = 0; i < verts.size(); ++i)
     if(best[i] != Mirror_matcher::none) by_cost.push_back(i);

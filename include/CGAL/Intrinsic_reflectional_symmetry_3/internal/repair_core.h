@@ -427,7 +427,8 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   const Repair_core_result detected = result;
   // the fits of each part do not depend on the attempt: computed once
   std::vector<std::vector<std::pair<double, Eigen::Matrix4d> > > part_fits(part_faces.size());
-  auto build = [&](std::size_t attempt) -> Repair_core_result {
+  const std::size_t skip = std::size_t(-1); // attempt[k] == skip: part k is not placed
+  auto build = [&](const std::vector<std::size_t>& attempt) -> Repair_core_result {
   Repair_core_result result = detected;
   // 3. Placement and overlap removal, per part.
   std::vector<char> removed(n, 0), removed_face(s.triangles.size(), 0);
@@ -437,6 +438,7 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   std::vector<Placed> placed;
   for(std::size_t k = 0; k < part_faces.size(); ++k)
   {
+    if(attempt[k] == skip) continue;
     const std::vector<std::size_t>& O = part_vertices[k];
     Repair_soup part;
     part.points = s.points;
@@ -511,8 +513,8 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
       fit_band(dO, 1.5, 4.);
       fit_band(dO, 0., 3.);
     }
-    const double rms = fits[(std::min)(attempt, fits.size() - 1)].first;
-    const Eigen::Matrix4d T = fits[(std::min)(attempt, fits.size() - 1)].second;
+    const double rms = fits[(std::min)(attempt[k], fits.size() - 1)].first;
+    const Eigen::Matrix4d T = fits[(std::min)(attempt[k], fits.size() - 1)].second;
     result.icp_rms.push_back(rms);
     auto place = [&](std::size_t v) { return apply(T, reflect_point(s.points[v], pn, pc)); };
 
@@ -669,17 +671,57 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   result.mesh = std::move(r);
   return result;
   };
+  // Each part gets its own fit: of those with which it can be attached alone,
+  // the one with the smallest ICP residual. The parts are separate limbs, so
+  // one part that cannot be attached with a fit must not force a worse fit on
+  // the others.
+  const std::size_t np = part_faces.size();
+  if(np == 0) return build(std::vector<std::size_t>());
+  std::vector<std::size_t> chosen(np, 0);
+  bool each = true;
+  for(std::size_t k = 0; k < np && each; ++k)
+  {
+    bool ok = false;
+    double best = std::numeric_limits<double>::infinity();
+    for(std::size_t a = 0; a < 4; ++a)
+    {
+      std::vector<std::size_t> one(np, skip);
+      one[k] = a;
+      try
+      {
+        build(one); // the result is not kept: the choice needs every fit tried
+        const double r = part_fits[k][(std::min)(a, part_fits[k].size() - 1)].first;
+        if(!ok || r < best) { best = r; chosen[k] = a; }
+        ok = true;
+      }
+      catch(const Input_error&) // this fit cannot be attached
+      {
+      }
+    }
+    each = ok;
+  }
+  if(each)
+  {
+    try
+    {
+      return build(chosen);
+    }
+    catch(const Input_error&) // the copies, each fine alone, clash: as before
+    {
+    }
+  }
+  // else the same fit for all the parts, in turn
   for(std::size_t attempt = 0; attempt + 1 < 4; ++attempt)
   {
     try
     {
-      return build(attempt);
+      return build(std::vector<std::size_t>(np, attempt));
     }
     catch(const Input_error&)
     {
     }
   }
-  return build(3); // if this fails too, its error is the one reported
+  return build(std::vector<std::size_t>(np, 3)); // if this fails too, its error is the one reported
 }
 
 } // namespace internal

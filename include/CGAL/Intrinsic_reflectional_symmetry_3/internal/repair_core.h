@@ -20,6 +20,8 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/fair.h>
 #include <CGAL/Polygon_mesh_processing/refine.h>
+#include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/linear_least_squares_fitting_3.h>
 
@@ -628,6 +630,8 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   Repair_surface m;
   std::string defect;
   const std::size_t kept_end = first_bridge;
+  std::vector<Repair_point> input_points(s.points);
+  std::sort(input_points.begin(), input_points.end());
   for(int variant = 0; variant < 3; ++variant)
   {
     m = soup_to_surface(compacted);
@@ -652,9 +656,30 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     }
     result.faired.assign(placed.size(), faired);
     defect = mesh_defect(m);
-    if(defect.empty() && self_intersects_new(m, [copy_faces, kept_end](Repair_surface::Face_index f) {
-         return std::size_t(f) < copy_faces || std::size_t(f) >= kept_end; }))
-      defect = "self-intersecting (a copied or stitched face crosses the surface)";
+    const auto is_new = [copy_faces, kept_end](Repair_surface::Face_index f) {
+      return std::size_t(f) < copy_faces || std::size_t(f) >= kept_end; };
+    if(defect.empty() && self_intersects_new(m, is_new))
+    {
+      // A rigid copy also copies the input's own self-intersections (FAUST:
+      // toes touching): the new faces that intersect are repaired locally by
+      // PMP (removed, the hole refilled), then the whole is checked again; a
+      // new face is now one with a corner that is not a point of the input.
+      std::vector<std::pair<Repair_surface::Face_index, Repair_surface::Face_index> > pairs;
+      PMP::self_intersections(m, std::back_inserter(pairs));
+      std::vector<Repair_surface::Face_index> bad;
+      for(const auto& p : pairs)
+        if(is_new(p.first) || is_new(p.second)) { bad.push_back(p.first); bad.push_back(p.second); }
+      std::sort(bad.begin(), bad.end());
+      bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+      PMP::experimental::remove_self_intersections(bad, m);
+      m.collect_garbage();
+      defect = mesh_defect(m);
+      if(defect.empty() && self_intersects_new(m, [&m, &input_points](Repair_surface::Face_index f) {
+           for(auto v : vertices_around_face(halfedge(f, m), m))
+             if(!std::binary_search(input_points.begin(), input_points.end(), m.point(v))) return true;
+           return false; }))
+        defect = "self-intersecting (a copied or stitched face crosses the surface)";
+    }
     if(defect.empty()) break;
   }
   if(!defect.empty())

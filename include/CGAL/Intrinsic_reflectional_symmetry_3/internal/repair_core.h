@@ -388,10 +388,13 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     for(std::size_t v : comp[c])
       if(((s.points[v] - pc) * pn) * mean_d < 0.) across += area[v];
     const bool one_sided = across <= 0.05 * sw && std::abs(mean_d) > tau;
-    // ... and when it is away from the axis (a limb, not the middle of the shape)
-    double g_min = std::numeric_limits<double>::infinity();
-    for(std::size_t v : comp[c]) g_min = (std::min)(g_min, g[v]);
-    const bool missing = off >= 0.5 * comp_area[c] && one_sided && g_min >= 3. * tau;
+    // ... and when it is away from the axis (a limb, not the middle of the
+    // shape): at most 5 % of its area within 3 tau of the axis. (Not "no
+    // vertex within 3 tau": a leg's orphan region runs up the inner thigh to
+    // the crotch, where the axis passes, and was rejected for a sliver.)
+    double near_axis = 0.;
+    for(std::size_t v : comp[c]) if(g[v] < 3. * tau) near_axis += area[v];
+    const bool missing = off >= 0.5 * comp_area[c] && one_sided && near_axis <= 0.05 * comp_area[c];
     if(missing) parts.push_back(c);
   }
   // each part as a disk-like region of triangles

@@ -12,20 +12,20 @@
 // the repaired surface.
 //
 // KNOWN LIMITS (measured; the strict tests are DISABLED_ until they pass):
-// - stick figure, 400 samples: one arm max 0.39 %, one leg 1.51 %, the
-//   3 %-stretched figure (arm) 1.48 %: enabled with the 2 % bound.
-// - two limbs (arm and leg): both parts are detected (the left-right curve
-//   comes once the front-back one, which detects nothing, has its tau
-//   removed), but the strip bridging the leg's copy to the body folds
-//   (self-intersection), so the repair throws; DISABLED_.
+// - stick figure, 400 samples: one arm, one leg, the 3 %-stretched figure
+//   (arm), and two limbs (arm and leg): enabled with the 2 % bound. (Two limbs
+//   passes since each part gets its own fit and the copy's inherited
+//   self-intersections are repaired locally.)
 // - FAUST (repair_benchmark, 1000 samples): the result is always closed and
 //   valid with no new self-intersection, or a clear Input_error. Within 2 %:
 //   forearm 7 of 19 shapes (000, 006, 010, 040, 050, 060, 090), forearm and
-//   lower leg 1 of 19 (090), so the strict test stays DISABLED_. The
-//   benchmark's oracle column (best rigid mirror copy, from the ground-truth
-//   symmetric map) is 1.2-2.06 % for the forearm: a rigid mirror copy cannot
-//   do much better than 1.6 % on most shapes (posed hands), so the 2 % bar
-//   leaves the placement only ~0.4 % of slack.
+//   lower leg 3 of 19 (010 1.23, 050 1.30, 090 1.89; near: 060 2.06, 006
+//   2.31, 020 2.40), so the strict test stays DISABLED_. The benchmark's
+//   oracle column
+//   (best rigid mirror copy, from the ground-truth symmetric map) is
+//   1.2-2.06 % for the forearm: a rigid mirror copy cannot do much better than
+//   1.6 % on most shapes (posed hands), so the 2 % bar leaves the placement
+//   only ~0.4 % of slack.
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/part_repair.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
@@ -152,7 +152,7 @@ TEST(Repair, OneArmSurfaceMesh)
   EXPECT_GT(std::abs(r.report.mirror_plane[0]), 0.95);
 }
 
-TEST(Repair, DISABLED_TwoLimbsSurfaceMesh) // known failing: the leg's seam strip folds
+TEST(Repair, TwoLimbsSurfaceMesh)
 {
   const Mesh m = IRS::generate_stick_figure<Mesh>(stick_vertices).mesh;
   Mesh damaged, repaired;

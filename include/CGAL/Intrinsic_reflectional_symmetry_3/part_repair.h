@@ -121,7 +121,8 @@ void copy_result(const Repair_core_result& r, OutputMesh& out, Part_repair_repor
 /// are parts to mirror when the reflection across the mirror plane sends at
 /// least half of their area off the surface (farther than tau) and outside
 /// the shape, when they lie on one side of the plane (at most 5 % of their
-/// area across it) and away from the axis: this extrinsic check rejects
+/// area across it) and away from the axis (at most 5 % of their area within
+/// 3 tau of it): this extrinsic check rejects
 /// regions where the map merely fails (a head maps onto itself), the
 /// intrinsic orphan test rejects limbs that only have another pose on the
 /// other side.
@@ -135,6 +136,8 @@ void copy_result(const Repair_core_result& r, OutputMesh& out, Part_repair_repor
 /// 1.5 to 4 tau inside its base: nearer the base, the reflection lands on the
 /// cut) onto the other side's surface, caps excluded; if no copy so placed
 /// can be attached, with the band from the base to 3 tau (posed limbs).
+/// Each part gets its own fit: of the four (two bands, two starts) with which
+/// it can be attached alone, the one with the smallest ICP residual.
 ///
 /// **Stitching.** The surface the copy replaces (the cap, from a gap of half
 /// the base radius before the copy's base, within 1.5 base radii of its axis)
@@ -142,7 +145,10 @@ void copy_result(const Repair_core_result& r, OutputMesh& out, Part_repair_repor
 /// (`CGAL::Polygon_mesh_processing::refine()`) and faired with the loops
 /// (`CGAL::Polygon_mesh_processing::fair()`, in place of the paper's Poisson
 /// interpolation); if that strip folds, it is faired inside only, then left
-/// plain (`seams_faired` false).
+/// plain (`seams_faired` false). A copy also copies the input's own
+/// self-intersections (skin touching skin in a scan): new faces that intersect
+/// are repaired locally (`CGAL::Polygon_mesh_processing::experimental::remove_self_intersections()`)
+/// before the result is checked.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// \tparam VertexPartnerMap a model of `ReadablePropertyMap`, vertex descriptor to a signed

@@ -20,6 +20,8 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/fair.h>
 #include <CGAL/Polygon_mesh_processing/refine.h>
+#include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/linear_least_squares_fitting_3.h>
 
@@ -386,10 +388,13 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     for(std::size_t v : comp[c])
       if(((s.points[v] - pc) * pn) * mean_d < 0.) across += area[v];
     const bool one_sided = across <= 0.05 * sw && std::abs(mean_d) > tau;
-    // ... and when it is away from the axis (a limb, not the middle of the shape)
-    double g_min = std::numeric_limits<double>::infinity();
-    for(std::size_t v : comp[c]) g_min = (std::min)(g_min, g[v]);
-    const bool missing = off >= 0.5 * comp_area[c] && one_sided && g_min >= 3. * tau;
+    // ... and when it is away from the axis (a limb, not the middle of the
+    // shape): at most 5 % of its area within 3 tau of the axis. (Not "no
+    // vertex within 3 tau": a leg's orphan region runs up the inner thigh to
+    // the crotch, where the axis passes, and was rejected for a sliver.)
+    double near_axis = 0.;
+    for(std::size_t v : comp[c]) if(g[v] < 3. * tau) near_axis += area[v];
+    const bool missing = off >= 0.5 * comp_area[c] && one_sided && near_axis <= 0.05 * comp_area[c];
     if(missing) parts.push_back(c);
   }
   // each part as a disk-like region of triangles
@@ -427,7 +432,8 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   const Repair_core_result detected = result;
   // the fits of each part do not depend on the attempt: computed once
   std::vector<std::vector<std::pair<double, Eigen::Matrix4d> > > part_fits(part_faces.size());
-  auto build = [&](std::size_t attempt) -> Repair_core_result {
+  const std::size_t skip = std::size_t(-1); // attempt[k] == skip: part k is not placed
+  auto build = [&](const std::vector<std::size_t>& attempt) -> Repair_core_result {
   Repair_core_result result = detected;
   // 3. Placement and overlap removal, per part.
   std::vector<char> removed(n, 0), removed_face(s.triangles.size(), 0);
@@ -437,6 +443,7 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   std::vector<Placed> placed;
   for(std::size_t k = 0; k < part_faces.size(); ++k)
   {
+    if(attempt[k] == skip) continue;
     const std::vector<std::size_t>& O = part_vertices[k];
     Repair_soup part;
     part.points = s.points;
@@ -511,8 +518,8 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
       fit_band(dO, 1.5, 4.);
       fit_band(dO, 0., 3.);
     }
-    const double rms = fits[(std::min)(attempt, fits.size() - 1)].first;
-    const Eigen::Matrix4d T = fits[(std::min)(attempt, fits.size() - 1)].second;
+    const double rms = fits[(std::min)(attempt[k], fits.size() - 1)].first;
+    const Eigen::Matrix4d T = fits[(std::min)(attempt[k], fits.size() - 1)].second;
     result.icp_rms.push_back(rms);
     auto place = [&](std::size_t v) { return apply(T, reflect_point(s.points[v], pn, pc)); };
 
@@ -626,6 +633,8 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   Repair_surface m;
   std::string defect;
   const std::size_t kept_end = first_bridge;
+  std::vector<Repair_point> input_points(s.points);
+  std::sort(input_points.begin(), input_points.end());
   for(int variant = 0; variant < 3; ++variant)
   {
     m = soup_to_surface(compacted);
@@ -650,9 +659,30 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     }
     result.faired.assign(placed.size(), faired);
     defect = mesh_defect(m);
-    if(defect.empty() && self_intersects_new(m, [copy_faces, kept_end](Repair_surface::Face_index f) {
-         return std::size_t(f) < copy_faces || std::size_t(f) >= kept_end; }))
-      defect = "self-intersecting (a copied or stitched face crosses the surface)";
+    const auto is_new = [copy_faces, kept_end](Repair_surface::Face_index f) {
+      return std::size_t(f) < copy_faces || std::size_t(f) >= kept_end; };
+    if(defect.empty() && self_intersects_new(m, is_new))
+    {
+      // A rigid copy also copies the input's own self-intersections (FAUST:
+      // toes touching): the new faces that intersect are repaired locally by
+      // PMP (removed, the hole refilled), then the whole is checked again; a
+      // new face is now one with a corner that is not a point of the input.
+      std::vector<std::pair<Repair_surface::Face_index, Repair_surface::Face_index> > pairs;
+      PMP::self_intersections(m, std::back_inserter(pairs));
+      std::vector<Repair_surface::Face_index> bad;
+      for(const auto& p : pairs)
+        if(is_new(p.first) || is_new(p.second)) { bad.push_back(p.first); bad.push_back(p.second); }
+      std::sort(bad.begin(), bad.end());
+      bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+      PMP::experimental::remove_self_intersections(bad, m);
+      m.collect_garbage();
+      defect = mesh_defect(m);
+      if(defect.empty() && self_intersects_new(m, [&m, &input_points](Repair_surface::Face_index f) {
+           for(auto v : vertices_around_face(halfedge(f, m), m))
+             if(!std::binary_search(input_points.begin(), input_points.end(), m.point(v))) return true;
+           return false; }))
+        defect = "self-intersecting (a copied or stitched face crosses the surface)";
+    }
     if(defect.empty()) break;
   }
   if(!defect.empty())
@@ -669,17 +699,57 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   result.mesh = std::move(r);
   return result;
   };
+  // Each part gets its own fit: of those with which it can be attached alone,
+  // the one with the smallest ICP residual. The parts are separate limbs, so
+  // one part that cannot be attached with a fit must not force a worse fit on
+  // the others.
+  const std::size_t np = part_faces.size();
+  if(np == 0) return build(std::vector<std::size_t>());
+  std::vector<std::size_t> chosen(np, 0);
+  bool each = true;
+  for(std::size_t k = 0; k < np && each; ++k)
+  {
+    bool ok = false;
+    double best = std::numeric_limits<double>::infinity();
+    for(std::size_t a = 0; a < 4; ++a)
+    {
+      std::vector<std::size_t> one(np, skip);
+      one[k] = a;
+      try
+      {
+        build(one); // the result is not kept: the choice needs every fit tried
+        const double r = part_fits[k][(std::min)(a, part_fits[k].size() - 1)].first;
+        if(!ok || r < best) { best = r; chosen[k] = a; }
+        ok = true;
+      }
+      catch(const Input_error&) // this fit cannot be attached
+      {
+      }
+    }
+    each = ok;
+  }
+  if(each)
+  {
+    try
+    {
+      return build(chosen);
+    }
+    catch(const Input_error&) // the copies, each fine alone, clash: as before
+    {
+    }
+  }
+  // else the same fit for all the parts, in turn
   for(std::size_t attempt = 0; attempt + 1 < 4; ++attempt)
   {
     try
     {
-      return build(attempt);
+      return build(std::vector<std::size_t>(np, attempt));
     }
     catch(const Input_error&)
     {
     }
   }
-  return build(3); // if this fails too, its error is the one reported
+  return build(std::vector<std::size_t>(np, 3)); // if this fails too, its error is the one reported
 }
 
 } // namespace internal

@@ -271,8 +271,7 @@ void write_symmetry_outputs(const Mesh& input, const Prepared& prepared, const s
 /// possible (Input_error) is reported, not thrown: the tool still succeeds.
 irsym::Json repair_outputs(const Mesh& work, const IRS::Geodesic_distance_matrix& D,
                            const IRS::Irsa_voting_result& voting, const std::vector<double>& tau,
-                           const std::vector<IRS::Irsa_curve>& curves, const std::vector<long>& partner,
-                           const fs::path& out, const std::string& up, irsym::Json& files)
+                           const std::vector<IRS::Irsa_curve>& curves, const fs::path& out, const std::string& up, irsym::Json& files)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   irsym::Json j = irsym::Json::object();
@@ -280,14 +279,12 @@ irsym::Json repair_outputs(const Mesh& work, const IRS::Geodesic_distance_matrix
   Mesh repaired;
   IRS::Part_repair_report r;
   try {
-    if(curves.size() == 1) // the CLI's map is then that curve's own map: reuse it
-      r = IRS::repair_missing_parts(work, curves.front(),
-                                    boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, work)),
-                                    repaired);
-    // otherwise, or if that curve detects nothing: the overload that tries the
-    // curves, each with its own map, and extracts again without the ones that
-    // detect nothing (a damaged body's left-right curve can rank behind its
+    // the curves, each with its own map (not the CLI's map: the repair's is
+    // not locally refined, see part_repair.h); if none detects a missing
+    // part, the overload that extracts again without the ones that detect
+    // nothing (a damaged body's left-right curve can rank behind its
     // front-back one)
+    r = IRS::repair_missing_parts(work, D, curves, repaired);
     if(r.number_of_parts == 0)
       r = IRS::repair_missing_parts(work, D, voting,
                                     boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
@@ -454,7 +451,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   std::optional<irsym::Json> repair;
   if(opt.repair) {
     log.start("part repair");
-    repair = repair_outputs(work, D, voting, tau, curves, partner, out, opt.up, files);
+    repair = repair_outputs(work, D, voting, tau, curves, out, opt.up, files);
     log.stop();
   }
   emit(tau_in, "transform");

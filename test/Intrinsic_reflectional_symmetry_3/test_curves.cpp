@@ -491,11 +491,12 @@ TEST(Curves, BentCapsuleGivesItsIntrinsicAxis)
   // changes lengths along the tube by a factor 1 -+ radius * curvature
   // (0.2 * (pi/3) / 2.5 = 0.084, shape_generators.h), so a distance-preserving
   // map strays from the construction's mirror by up to 8.4 % of the distance
-  // to the axis. And far out on this thin tube (beyond about 7 radii from the
-  // axis), the distances to the rest of the shape no longer tell the top of
-  // the tube from its bottom within the geodesic noise: there the map may
-  // follow the end-to-end reflection composed with the bending-plane one
-  // (another approximate symmetry of the shape), which is printed, not tested.
+  // to the axis. Far out on this thin tube (beyond about 7 radii from the
+  // axis) the distances to far landmarks no longer tell the top of the tube
+  // from its bottom within that distortion, and the global match alone
+  // followed the end-to-end reflection composed with the bending-plane one
+  // (another approximate symmetry) at 15 % of those vertices (85 % within
+  // the bound); the local refinement of the map gets them right.
   const double distortion = 0.2 * (CGAL_PI / 3) / 2.5;
   std::vector<int> near_region(p.vertex_region), far_region(p.vertex_region);
   for(std::size_t v = 0; v < pts.size(); ++v)
@@ -520,6 +521,8 @@ TEST(Curves, BentCapsuleGivesItsIntrinsicAxis)
   EXPECT_GE(all.region_vertices, pts.size() * 9 / 10);
   EXPECT_GE(q.evaluated, pts.size() / 2);
   EXPECT_GE(q.share(), 0.95);
+  EXPECT_GE(q_far.evaluated, pts.size() / 3);
+  EXPECT_GE(q_far.share(), 0.95);
 }
 
 // ---------------------------------------------------------------- determinism, genericity

@@ -74,6 +74,9 @@ void symmetric_map_setup(const TriangleMesh& tm, const Geodesic_distance_matrix&
   const double spacing = mean_sample_spacing(D);
   const double unit = spacing > 0. ? spacing : m.mean_edge_length;
   symmetry_settings(np, unit, floor_edges * m.mean_edge_length, rs.number_of_landmarks, rs.symmetry, rs.ignition);
+  const double rounds = double(choose_parameter(get_parameter(np, inp::number_of_local_rounds), rs.local_rounds));
+  check_voting_parameter(rounds >= 0. && rounds <= 100., "number_of_local_rounds must be in [0, 100]");
+  rs.local_rounds = std::size_t(rounds);
 }
 
 /// the shared first step of `symmetric_regions()` and `symmetric_vertex_map()`:
@@ -188,6 +191,38 @@ std::size_t symmetric_regions(const TriangleMesh& tm, const Geodesic_distance_ma
   return count;
 }
 
+namespace internal {
+
+/// symmetric_vertex_map(), with `local_rounds` >= 0 in place of the named parameter
+template <typename ConcurrencyTag, typename TriangleMesh, typename CurveRange, typename VertexPartnerMap,
+          typename NamedParameters>
+std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance_matrix& D, const CurveRange& curves,
+                                 VertexPartnerMap partner, const NamedParameters& np, std::ptrdiff_t local_rounds = -1)
+{
+  internal::Curves_mesh m;
+  std::vector<const Irsa_curve*> cs;
+  internal::Region_settings rs;
+  const internal::Region_growing_result rg =
+    internal::grow_symmetric_regions<ConcurrencyTag>(tm, D, curves, np, m, cs, rs, true);
+  if(local_rounds >= 0) rs.local_rounds = std::size_t(local_rounds);
+  std::vector<std::ptrdiff_t> p(m.number_of_vertices, -1);
+  for(std::size_t c = 0; c < cs.size(); ++c)
+    internal::dense_region_map<ConcurrencyTag>(m, D, *cs[c], rg.label, int(c), rs, p);
+
+  typedef typename boost::property_traits<VertexPartnerMap>::value_type Value;
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  std::size_t count = 0;
+  for(auto v : vertices(tm))
+  {
+    const std::ptrdiff_t x = p[std::size_t(get(vim, v))];
+    put(partner, v, static_cast<Value>(x));
+    count += (x >= 0);
+  }
+  return count;
+}
+
+} // namespace internal
+
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// The point-to-point reflection induced by the IRSA curves: every vertex
 /// where a curve's reflection holds gets a mirror partner by the most
@@ -219,7 +254,8 @@ std::size_t symmetric_regions(const TriangleMesh& tm, const Geodesic_distance_ma
 ///
 /// **Local refinement.** On a posed shape (one arm raised) distances to far
 /// landmarks are not preserved by the reflection, and E averages their
-/// distortion into every vertex. So the partners are then refined 3 times
+/// distortion into every vertex. So the partners are then refined
+/// `number_of_local_rounds` times (default 3)
 /// under locally weighted landmarks: the partner of x minimises
 /// `E_w(x, y) = sum_k w_k(x) ((d(x,p_k) - d(y,q_k))^2 + (d(x,q_k) - d(y,p_k))^2)`
 /// with `w_k(x) = exp(-(min(d(x,p_k), d(x,q_k)) / sigma)^2)` (landmarks
@@ -252,6 +288,11 @@ std::size_t symmetric_regions(const TriangleMesh& tm, const Geodesic_distance_ma
 ///     \cgalParamDescription{the most landmark pairs representing a curve's reflection}
 ///     \cgalParamType{std::size_t >= 1}
 ///     \cgalParamDefault{64}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_local_rounds}
+///     \cgalParamDescription{rounds of the local refinement of the partners (0: the global match only)}
+///     \cgalParamType{std::size_t}
+///     \cgalParamDefault{3}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{symmetry_tolerance}
 ///     \cgalParamDescription{the reflection holds at a vertex when the residual of its mirror partner is
@@ -295,25 +336,7 @@ template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename Tr
 std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance_matrix& D, const CurveRange& curves,
                                  VertexPartnerMap partner, const CGAL_NP_CLASS& np = parameters::default_values())
 {
-  internal::Curves_mesh m;
-  std::vector<const Irsa_curve*> cs;
-  internal::Region_settings rs;
-  const internal::Region_growing_result rg =
-    internal::grow_symmetric_regions<ConcurrencyTag>(tm, D, curves, np, m, cs, rs, true);
-  std::vector<std::ptrdiff_t> p(m.number_of_vertices, -1);
-  for(std::size_t c = 0; c < cs.size(); ++c)
-    internal::dense_region_map<ConcurrencyTag>(m, D, *cs[c], rg.label, int(c), rs, p);
-
-  typedef typename boost::property_traits<VertexPartnerMap>::value_type Value;
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  std::size_t count = 0;
-  for(auto v : vertices(tm))
-  {
-    const std::ptrdiff_t x = p[std::size_t(get(vim, v))];
-    put(partner, v, static_cast<Value>(x));
-    count += (x >= 0);
-  }
-  return count;
+  return internal::symmetric_vertex_map<ConcurrencyTag>(tm, D, curves, partner, np);
 }
 
 } // namespace Intrinsic_reflectional_symmetry_3

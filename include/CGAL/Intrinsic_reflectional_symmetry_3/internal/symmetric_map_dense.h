@@ -45,12 +45,10 @@ inline double mean_sample_spacing(const Geodesic_distance_matrix& D)
   return count > 0 ? sum / double(count) : 0.;
 }
 
-/// rounds of local refinement of the dense map (dense_region_map())
-constexpr std::size_t local_map_rounds = 3;
-
 struct Region_settings
 {
   std::size_t number_of_landmarks = 32;
+  std::size_t local_rounds = 3; // of the dense map (dense_region_map())
   Symmetry_tolerance symmetry;
   double ignition = 0.;
 };
@@ -183,7 +181,7 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
   for(const auto& f : m.faces)
     if(in_region[f[0]] && in_region[f[1]] && in_region[f[2]]) region_area += triangle_area(m, f);
   const std::size_t ns = D.number_of_sources();
-  for(std::size_t round = 0; round < local_map_rounds && !landmarks.empty(); ++round)
+  for(std::size_t round = 0; round < st.local_rounds && !landmarks.empty(); ++round)
   {
     if(round > 0)
     {

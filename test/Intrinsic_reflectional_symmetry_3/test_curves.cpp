@@ -318,6 +318,65 @@ TEST(Curves, PruningCutsLowSupportRuns)
   EXPECT_EQ(curves[0].polylines[0].vertices.size(), 10u);
 }
 
+TEST(Curves, LocalPartnersEqualTheLiteralMinimum)
+{
+  // local_best_partners() (early exit, current partner first) against the
+  // literal minimum of E_w over all candidates, on a bent capsule with
+  // arbitrary landmark pairs of samples
+  typedef IRS::internal::Mirror_matcher MM;
+  const auto shape = IRS::generate_bent_capsule<Mesh>(1200);
+  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(shape.mesh);
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(shape.mesh, IRS::parameters::number_of_samples(120).random_seed(3u));
+  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  Pairs landmarks;
+  for(std::size_t k = 0; k < 24; ++k) landmarks.emplace_back(k, (k * 7 + 5) % samples.size());
+  const MM mm(D, landmarks);
+  const std::size_t nv = D.number_of_vertices();
+  std::vector<std::size_t> all(nv), best;
+  for(std::size_t v = 0; v < nv; ++v) all[v] = v;
+  std::vector<double> residual;
+  mm.best_partners<CGAL::Parallel_if_available_tag>(all, all, best, residual);
+  const std::vector<std::size_t> global = best;
+  const double sigma = 0.4;
+  IRS::internal::local_best_partners<CGAL::Parallel_if_available_tag>(mm, all, all, sigma, best, residual);
+
+  std::size_t kept = 0, moved = 0;
+  for(std::size_t x = 0; x < nv; ++x)
+  {
+    const float* ux = mm.landmark_distances(x);
+    std::vector<double> w(landmarks.size(), 0.);
+    std::size_t active = 0;
+    double wsum = 0.;
+    for(std::size_t k = 0; k < landmarks.size(); ++k)
+    {
+      const double d = (std::min)(double(ux[2 * k]), double(ux[2 * k + 1]));
+      if(d <= 3. * sigma) { w[k] = std::exp(-(d / sigma) * (d / sigma)); ++active; wsum += w[k]; }
+    }
+    if(active < 3) { EXPECT_EQ(best[x], global[x]); ++kept; continue; }
+    auto energy = [&](std::size_t y) {
+      const float* uy = mm.landmark_distances(y);
+      double e = 0.;
+      for(std::size_t k = 0; k < landmarks.size(); ++k)
+      {
+        const double d0 = double(ux[2 * k]) - double(uy[2 * k + 1]);
+        const double d1 = double(ux[2 * k + 1]) - double(uy[2 * k]);
+        e += w[k] * (d0 * d0 + d1 * d1);
+      }
+      return e;
+    };
+    double emin = std::numeric_limits<double>::infinity();
+    for(std::size_t y = 0; y < nv; ++y) emin = (std::min)(emin, energy(y));
+    // the same minimum (sums in another order: equal within rounding)
+    EXPECT_LE(energy(best[x]), emin * (1. + 1e-9) + 1e-15) << "vertex " << x;
+    EXPECT_NEAR(residual[x], std::sqrt(emin / (2. * wsum)), 1e-6 * (1. + residual[x])) << "vertex " << x;
+    moved += best[x] != global[x];
+  }
+  std::cout << "[ local partners ] " << nv << " vertices, " << kept << " kept (fewer than 3 landmarks near), "
+            << moved << " moved by the local weights" << std::endl;
+  EXPECT_GT(moved, 0u); // the weights matter
+}
+
 TEST(Curves, NestedSymmetriesAreKeptOtherSymmetriesOfAPartRemoved)
 {
   // a capsule along z; the better curve is the z=0 plane (it swaps the two

@@ -75,22 +75,42 @@ inline void fit_plane(const std::vector<Repair_point>& pts, Repair_vector& n, Re
   n = n / std::sqrt(n.squared_length());
 }
 
-/// Rigid ICP (point to closest surface point, trimmed): returns T with T(src)
-/// ~ the target surface (`target`: triangles of a soup). Rigid fit by
-/// Eigen's umeyama(), closest points by a CGAL AABB tree: closest points on
-/// the triangles, not nearest vertices, because the two sides of a scan are
-/// meshed independently and nearest vertices bias the fit by up to half an edge.
-inline Eigen::Matrix4d rigid_icp(const std::vector<Repair_point>& src, const Repair_soup& target,
-                                 double max_pair_distance, unsigned iterations, double& rms, double& rms_start)
+/// The surface ICP fits onto, as an AABB tree of its triangles: built once,
+/// queried by every fit of every part.
+class Icp_target
 {
   typedef CGAL::AABB_face_graph_triangle_primitive<Repair_surface> Primitive;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<Repair_kernel, Primitive> > Tree;
+
+public:
+  /// `target`: triangles of a soup
+  explicit Icp_target(const Repair_soup& target)
+    : surface_(soup_to_surface(compact_soup(target))), tree_(faces(surface_).first, faces(surface_).second, surface_)
+  {
+    if(!tree_.empty()) tree_.accelerate_distance_queries();
+  }
+  Icp_target(const Icp_target&) = delete; // the tree points into the surface
+  Icp_target& operator=(const Icp_target&) = delete;
+
+  bool empty() const { return tree_.empty(); }
+  Repair_point closest_point(const Repair_point& p) const { return tree_.closest_point(p); }
+
+private:
+  Repair_surface surface_;
+  Tree tree_;
+};
+
+/// Rigid ICP (point to closest surface point, trimmed): returns T with T(src)
+/// ~ the target surface. Rigid fit by Eigen's umeyama(), closest points by a
+/// CGAL AABB tree: closest points on the triangles, not nearest vertices,
+/// because the two sides of a scan are meshed independently and nearest
+/// vertices bias the fit by up to half an edge.
+inline Eigen::Matrix4d rigid_icp(const std::vector<Repair_point>& src, const Icp_target& target,
+                                 double max_pair_distance, unsigned iterations, double& rms, double& rms_start)
+{
   Eigen::Matrix4d T = Eigen::Matrix4d::Identity();
   rms = rms_start = std::numeric_limits<double>::infinity();
-  if(src.size() < 3 || target.triangles.empty()) return T;
-  const Repair_surface surface = soup_to_surface(compact_soup(target));
-  Tree tree(faces(surface).first, faces(surface).second, surface);
-  tree.accelerate_distance_queries();
+  if(src.size() < 3 || target.empty()) return T;
 
   for(unsigned it = 0; it < iterations; ++it)
   {
@@ -98,7 +118,7 @@ inline Eigen::Matrix4d rigid_icp(const std::vector<Repair_point>& src, const Rep
     for(const Repair_point& p0 : src)
     {
       const Eigen::Vector3d p = (T * Eigen::Vector4d(p0.x(), p0.y(), p0.z(), 1.)).head<3>();
-      const Repair_point q = tree.closest_point(Repair_point(p.x(), p.y(), p.z()));
+      const Repair_point q = target.closest_point(Repair_point(p.x(), p.y(), p.z()));
       const double d = std::sqrt(CGAL::squared_distance(q, Repair_point(p.x(), p.y(), p.z())));
       if(d > max_pair_distance) continue;
       pairs.push_back(std::make_pair(d, std::make_pair(p, Eigen::Vector3d(q.x(), q.y(), q.z()))));
@@ -420,17 +440,20 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     for(std::size_t v : O)
       if(partner[v] >= 0 && std::size_t(partner[v]) < n)
         for(std::size_t w : nb[std::size_t(partner[v])]) hub[w] = hub[std::size_t(partner[v])] = 1;
-  Repair_soup target;
-  target.points = s.points;
-  for(const Repair_triangle& t : s.triangles)
-    if(!in_part[t[0]] && !in_part[t[1]] && !in_part[t[2]] && !hub[t[0]] && !hub[t[1]] && !hub[t[2]])
-      target.triangles.push_back(t);
+  Repair_soup target_soup; // no triangles (no tree to build) when there is no part to place
+  target_soup.points = s.points;
+  if(!part_faces.empty())
+    for(const Repair_triangle& t : s.triangles)
+      if(!in_part[t[0]] && !in_part[t[1]] && !in_part[t[2]] && !hub[t[0]] && !hub[t[1]] && !hub[t[2]])
+        target_soup.triangles.push_back(t);
+  const Icp_target target(target_soup);
 
   // 3-5 with, for every part, fit number `attempt` (0, 1: the two starts
   // on the far band; 2, 3: on the near band), tried in turn until the
   // copies can be stitched cleanly
   const Repair_core_result detected = result;
   // the fits of each part do not depend on the attempt: computed once
+  const std::size_t number_of_fits = 4; // two bands, two starts each
   std::vector<std::vector<std::pair<double, Eigen::Matrix4d> > > part_fits(part_faces.size());
   const std::size_t skip = std::size_t(-1); // attempt[k] == skip: part k is not placed
   auto build = [&](const std::vector<std::size_t>& attempt) -> Repair_core_result {
@@ -518,8 +541,8 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
       fit_band(dO, 1.5, 4.);
       fit_band(dO, 0., 3.);
     }
-    const double rms = fits[(std::min)(attempt[k], fits.size() - 1)].first;
-    const Eigen::Matrix4d T = fits[(std::min)(attempt[k], fits.size() - 1)].second;
+    const double rms = fits[attempt[k]].first;
+    const Eigen::Matrix4d T = fits[attempt[k]].second;
     result.icp_rms.push_back(rms);
     auto place = [&](std::size_t v) { return apply(T, reflect_point(s.points[v], pn, pc)); };
 
@@ -711,14 +734,14 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   {
     bool ok = false;
     double best = std::numeric_limits<double>::infinity();
-    for(std::size_t a = 0; a < 4; ++a)
+    for(std::size_t a = 0; a < number_of_fits; ++a)
     {
       std::vector<std::size_t> one(np, skip);
       one[k] = a;
       try
       {
         build(one); // the result is not kept: the choice needs every fit tried
-        const double r = part_fits[k][(std::min)(a, part_fits[k].size() - 1)].first;
+        const double r = part_fits[k][a].first;
         if(!ok || r < best) { best = r; chosen[k] = a; }
         ok = true;
       }
@@ -739,7 +762,7 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     }
   }
   // else the same fit for all the parts, in turn
-  for(std::size_t attempt = 0; attempt + 1 < 4; ++attempt)
+  for(std::size_t attempt = 0; attempt + 1 < number_of_fits; ++attempt)
   {
     try
     {
@@ -749,7 +772,7 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     {
     }
   }
-  return build(std::vector<std::size_t>(np, 3)); // if this fails too, its error is the one reported
+  return build(std::vector<std::size_t>(np, number_of_fits - 1)); // if this fails too, its error is the one reported
 }
 
 } // namespace internal

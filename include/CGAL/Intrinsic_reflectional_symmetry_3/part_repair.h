@@ -366,6 +366,8 @@ struct Part_repair_protocol_result
   /// the repaired surface, in % of the repaired surface's bounding-box diagonal
   double max_distance = std::numeric_limits<double>::quiet_NaN();
   double mean_distance = std::numeric_limits<double>::quiet_NaN();
+  /// the max distance (same unit) per limb, in the order of the cuts
+  std::vector<double> max_distance_per_cut;
   /// checks of the repaired mesh: valid triangle mesh, closed, self-intersecting at all, and
   /// self-intersecting through a face that is not a face of `tm` (a face is "of `tm`" when its
   /// three corners are points of `tm`): many scans, most FAUST meshes among them, already
@@ -423,12 +425,14 @@ Part_repair_protocol_result run_part_repair_protocol(const TriangleMesh& tm, con
   const double e = internal::soup_mean_edge_length(s);
   std::vector<char> removed(s.points.size(), 0);
   std::vector<Point> removed_points;
-  for(const Limb_cut& c : cuts)
+  std::vector<std::size_t> cut_of; // per removed point: its cut
+  for(std::size_t k = 0; k < cuts.size(); ++k)
   {
+    const Limb_cut& c = cuts[k];
     if(c.tip >= s.points.size())
       throw Input_error(Input_problem::invalid_parameter, "limb cut: the tip is not a vertex", c.tip);
     for(std::size_t v : internal::limb_vertices(s, nb, c.tip, c.length, e))
-      if(!removed[v]) { removed[v] = 1; removed_points.push_back(s.points[v]); }
+      if(!removed[v]) { removed[v] = 1; removed_points.push_back(s.points[v]); cut_of.push_back(k); }
   }
   res.removed_vertices = removed_points.size();
   internal::cut_and_cap(s, removed, damaged);
@@ -492,15 +496,18 @@ Part_repair_protocol_result run_part_repair_protocol(const TriangleMesh& tm, con
   tree.accelerate_distance_queries();
   const double diag = internal::soup_bbox_diagonal(r.points);
   double mx = 0., sum = 0.;
-  for(const Point& p : removed_points)
+  std::vector<double> mx_cut(cuts.size(), 0.);
+  for(std::size_t i = 0; i < removed_points.size(); ++i)
   {
-    const double d = std::sqrt(tree.squared_distance(p));
+    const double d = std::sqrt(tree.squared_distance(removed_points[i]));
     mx = (std::max)(mx, d);
+    mx_cut[cut_of[i]] = (std::max)(mx_cut[cut_of[i]], d);
     sum += d;
   }
   if(!removed_points.empty() && diag > 0.)
   {
     res.max_distance = 100. * mx / diag;
+    for(double m : mx_cut) res.max_distance_per_cut.push_back(100. * m / diag);
     res.mean_distance = 100. * sum / double(removed_points.size()) / diag;
   }
   return res;

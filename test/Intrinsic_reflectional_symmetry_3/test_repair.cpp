@@ -20,7 +20,8 @@
 //   valid with no new self-intersection, or a clear Input_error. Within 2 %:
 //   forearm 7 of 19 shapes (000, 006, 010, 040, 050, 060, 090), forearm and
 //   lower leg 3 of 19 (010 1.23, 050 1.30, 090 1.89; near: 060 2.06, 006
-//   2.31, 020 2.40), so the strict test stays DISABLED_. The benchmark's
+//   2.31, 020 2.40), so the strict test stays DISABLED_ (a regression guard
+//   runs it on 010, 050 and 090). The benchmark's
 //   oracle column
 //   (best rigid mirror copy, from the ground-truth symmetric map) is
 //   1.2-2.06 % for the forearm: a rigid mirror copy cannot do much better than
@@ -38,6 +39,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -101,6 +103,9 @@ void expect_good_repair(const IRS::Part_repair_protocol_result& r, std::size_t p
   EXPECT_GT(r.removed_vertices, 0u);
   EXPECT_GT(r.repaired_vertices, r.damaged_vertices);
   EXPECT_LT(r.max_distance, max_percent) << "mean " << r.mean_distance << " %";
+  // one figure per limb cut (each test cuts as many limbs as it expects parts); the overall max is the largest
+  ASSERT_EQ(r.max_distance_per_cut.size(), parts);
+  EXPECT_EQ(r.max_distance, *std::max_element(r.max_distance_per_cut.begin(), r.max_distance_per_cut.end()));
 }
 
 std::vector<K::Point_3> points_of(const Mesh& m)
@@ -376,3 +381,26 @@ TEST_P(RepairFaust, DISABLED_ForearmAndLowerLegWithinTwoPercent)
 }
 
 INSTANTIATE_TEST_SUITE_P(Faust, RepairFaust, ::testing::ValuesIn(faust_shapes));
+
+// A regression guard, not the bar (five shapes per case, which is not
+// met for two limbs): the strict test on the shapes where repair_benchmark
+// measures it passing, with their margins (one limb: 010 1.13 %, 050 1.43 %,
+// 090 1.05 %; two limbs: 010 1.23 %, 050 1.30 %).
+TEST(RepairFaustRegression, WithinTwoPercentWhereMeasured)
+{
+  for(const char* name : {"tr_reg_010", "tr_reg_050", "tr_reg_090"})
+  {
+    Faust_case c;
+    if(!read_faust_case(name, c)) GTEST_SKIP() << faust_dir() / (std::string(name) + ".off") << " absent";
+    ASSERT_TRUE(c.ok) << "could not read " << name << " or its correspondences";
+    Mesh damaged, repaired;
+    SCOPED_TRACE(std::string(name) + ": forearm");
+    expect_good_repair(IRS::run_part_repair_protocol(c.mesh, {c.hand}, damaged, repaired,
+                                                     IRS::parameters::number_of_samples(faust_samples)), 1);
+    if(std::string(name) == "tr_reg_090") continue; // two limbs: 1.89 %, too little margin for a guard
+    Mesh damaged2, repaired2;
+    SCOPED_TRACE(std::string(name) + ": forearm and lower leg");
+    expect_good_repair(IRS::run_part_repair_protocol(c.mesh, {c.hand, c.foot}, damaged2, repaired2,
+                                                     IRS::parameters::number_of_samples(faust_samples)), 2);
+  }
+}

@@ -721,12 +721,12 @@ private:
             push(endpoint(first + k, first + std::uint32_t(ctz(c))));
         }
       }
-      // edges to other blocks, each once: from here unless the other block
-      // is scanned too and comes first
+      // edges to other blocks (an edge between two scanned blocks is found
+      // from both: the set of vertices below drops the repetition, which
+      // costs less than a test per edge)
       for(std::size_t k = ext_offsets[blk]; k < ext_offsets[blk + 1]; ++k)
       {
         const std::uint32_t other = ext[4 * k + 2];
-        if(scan[other] && other < blk) continue;
         const std::uint32_t bits = ext[4 * k + 3], lu = bits & 0xff, lv = bits >> 8;
         const std::uint32_t cross = (((nb >> lu) & (pos[other] >> lv)) | ((pb_ >> lu) & (neg[other] >> lv))) & 1u;
         if(cross)

@@ -352,6 +352,7 @@ public:
     std::vector<Candidate> candidates;
     std::vector<std::size_t> points;          // U, increasing sample indices
     std::vector<int> labels;
+    Dbscan_buffers dbscan_buffers;
     std::vector<std::size_t> kept;            // indices into candidates
     std::vector<std::size_t> cursor;          // grid construction
     std::vector<std::uint32_t> ss, ts;        // the kept pairs' samples
@@ -931,7 +932,7 @@ private:
       }
       out.resize(old + no);
     };
-    dbscan(sc.points.size(), s_.settings.locality_min_points, neighbors, sc.labels);
+    dbscan(sc.points.size(), s_.settings.locality_min_points, neighbors, sc.labels, sc.dbscan_buffers);
 
     int cluster = -1;
     float best = std::numeric_limits<float>::infinity();

@@ -335,6 +335,7 @@ public:
     std::vector<unsigned char> block_scan;    // beta: blocks whose edges are tested
     std::vector<std::uint32_t> found;         // beta, with repetitions
     std::vector<std::uint64_t> vertex_bits;   // beta: a bit per vertex, zero between calls
+    std::vector<std::uint32_t> undecided;     // beta: blocks the bounds leave undecided
     std::vector<std::uint32_t> negative_mask, positive_mask, zero_mask; // beta: signs of f per block
     std::vector<std::uint32_t> sample_stamp;  // membership in U
     std::vector<std::uint64_t> sample_bits;   // U as a bit set, zero between calls
@@ -636,7 +637,11 @@ private:
     // throughout, 3: no finite value (another component), 4: mixed or zero.
     // The bound decides most blocks from their first vertex alone (then f is
     // finite and of one strict sign at every vertex of the block); the others
-    // are classified vertex by vertex.
+    // (0 until then) are classified vertex by vertex once all the blocks have
+    // been seen, their reads of the rows of a and b (cache misses: the rows
+    // change at every pair) prefetched meanwhile.
+    std::vector<std::uint32_t>& undecided = sc.undecided;
+    undecided.clear();
     for(std::size_t blk = 0; blk < nblocks; ++blk)
     {
       const float la = ia[2 * blk + 1], lb = ib[2 * blk + 1];
@@ -654,20 +659,34 @@ private:
         if(fc < -bound) status = 1;
         else if(fc > bound) status = 2;
       }
-      std::uint32_t n_mask = status == 1 ? full : 0, p_mask = status == 2 ? full : 0, z_mask = 0;
       if(status == 0)
       {
-        const std::size_t first = offsets[blk];
-        for(std::uint32_t k = 0; k < size; ++k)
+        undecided.push_back(std::uint32_t(blk));
+#if defined(__GNUC__) || defined(__clang__)
+        for(std::uint32_t k = offsets[blk]; k < offsets[blk + 1]; ++k)
         {
-          const float fv = f(first + k);
-          n_mask |= std::uint32_t(fv < 0.f) << k;
-          p_mask |= std::uint32_t(fv > 0.f) << k;
-          z_mask |= std::uint32_t(fv == 0.f) << k;
+          __builtin_prefetch(pa + bverts[k]);
+          __builtin_prefetch(pb + bverts[k]);
         }
-        const unsigned bits = unsigned(n_mask != 0) | (unsigned(p_mask != 0) << 1) | (unsigned(z_mask != 0) << 2);
-        status = (bits == 1 || bits == 2) ? (unsigned char)bits : (bits == 0 ? 3 : 4);
+#endif
       }
+      status_of[blk] = status;
+      scan[blk] = 0;
+      neg[blk] = status == 1 ? full : 0; pos[blk] = status == 2 ? full : 0; zero[blk] = 0;
+    }
+    for(std::uint32_t blk : undecided)
+    {
+      const std::uint32_t first = offsets[blk], size = offsets[blk + 1] - first;
+      std::uint32_t n_mask = 0, p_mask = 0, z_mask = 0;
+      for(std::uint32_t k = 0; k < size; ++k)
+      {
+        const float fv = f(first + k);
+        n_mask |= std::uint32_t(fv < 0.f) << k;
+        p_mask |= std::uint32_t(fv > 0.f) << k;
+        z_mask |= std::uint32_t(fv == 0.f) << k;
+      }
+      const unsigned bits = unsigned(n_mask != 0) | (unsigned(p_mask != 0) << 1) | (unsigned(z_mask != 0) << 2);
+      const unsigned char status = (bits == 1 || bits == 2) ? (unsigned char)bits : (bits == 0 ? 3 : 4);
       status_of[blk] = status;
       scan[blk] = (unsigned char)(status == 4);
       neg[blk] = n_mask; pos[blk] = p_mask; zero[blk] = z_mask;

@@ -294,9 +294,16 @@ private:
     // The bounds, read from the rows of D. (A copy of D in block order would
     // make the reads of a block contiguous, but its allocation and copy cost
     // more than they save: page faults on n x V floats, then reads of a few
-    // blocks per pair.)
+    // blocks per pair.) Each row is read in vertex order (sequentially: the
+    // block order scatters the reads over the row), each vertex raising the
+    // bound of its block; a block's first vertex is tagged and leaves it
+    // alone. (The maximum does not depend on the order: e is never NaN.)
     const std::size_t n = number_of_samples_;
     const float inf = std::numeric_limits<float>::infinity();
+    const std::uint32_t first_tag = std::uint32_t(1) << 31;
+    std::vector<std::uint32_t> tag(block_of);
+    for(std::size_t blk = 0; blk < nblocks; ++blk)
+      tag[block_vertices_[block_offsets_[blk]]] |= first_tag;
     block_info_.resize(2 * n * nblocks);
     for_each_index(n, [&](std::size_t x) {
       const float* r = D_->row(x);
@@ -304,17 +311,22 @@ private:
       float* info = block_info_.data() + 2 * x * nblocks;
       for(std::size_t blk = 0; blk < nblocks; ++blk)
       {
-        const float dc = r[bv[block_offsets_[blk]]];
-        float bound = 0.f;
-        for(std::size_t k = block_offsets_[blk] + 1; k < block_offsets_[blk + 1]; ++k)
-        {
-          // |d(x,v) - d(x,c)|; infinite if exactly one is finite or d(x,v) is NaN
-          const float dv = r[bv[k]];
-          const bool mismatch = (std::isfinite(dc) != std::isfinite(dv)) || std::isnan(dv);
-          const float e = mismatch ? inf : (std::isfinite(dv) ? std::abs(dv - dc) : 0.f);
-          bound = (std::max)(bound, e);
-        }
-        info[2 * blk] = dc;
+        info[2 * blk] = r[bv[block_offsets_[blk]]];
+        info[2 * blk + 1] = 0.f;
+      }
+      for(std::size_t v = 0; v < nv; ++v)
+      {
+        const std::uint32_t t = tag[v], blk = t & ~first_tag;
+        const float dc = info[2 * blk];
+        // |d(x,v) - d(x,c)|; infinite if exactly one is finite or d(x,v) is NaN
+        const float dv = r[v];
+        const bool mismatch = (std::isfinite(dc) != std::isfinite(dv)) || std::isnan(dv);
+        const float e = (t & first_tag) ? 0.f : (mismatch ? inf : (std::isfinite(dv) ? std::abs(dv - dc) : 0.f));
+        info[2 * blk + 1] = (std::max)(info[2 * blk + 1], e);
+      }
+      for(std::size_t blk = 0; blk < nblocks; ++blk)
+      {
+        const float bound = info[2 * blk + 1];
         // widened by more than the rounding of the difference
         info[2 * blk + 1] = float(double(bound) * (1. + 2e-6));
       }

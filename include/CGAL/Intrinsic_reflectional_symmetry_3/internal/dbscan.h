@@ -27,9 +27,8 @@ namespace internal {
 // order, the labelling depends only on the neighbour relation, not on how the
 // caller computes it (brute force or precomputed lists give the same labels).
 //
-// Returns the number of clusters.
-// Work lists of dbscan(), for callers that cluster many small sets (their
-// capacity is kept from one call to the next).
+// Returns the number of clusters. `buffers`: work lists, for callers that
+// cluster many small sets (their capacity is kept from one call to the next).
 struct Dbscan_buffers
 {
   std::vector<std::size_t> nbrs, seeds;

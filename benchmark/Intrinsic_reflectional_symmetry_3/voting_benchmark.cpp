@@ -15,6 +15,7 @@
 //   --threads N           threads of the parallel stages (default: all)
 //   --reference-samples N samples of the fast-vs-reference run (default 300; 0: skip)
 //   --reference-eps a,b   similarity thresholds of that run (default 0.025,0.05,0.1,0.2)
+//   --no-scaling          skip the scaling study (e.g. to run only fast vs reference)
 //   --robustness          also run the noise and holes study (camel, and FAUST with --faust)
 //   --robustness-samples N  samples of that study (default 1000)
 //   --floor-study         also run the distance-floor measurements
@@ -190,6 +191,11 @@ void versus_reference(const std::string& path, std::size_t n, const std::vector<
                " bit-different tau |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::unique_ptr<IRS::internal::Voting_index> index;
   double t_index = 0.;
+  std::ostringstream stages; // where the 1-thread fast voting spends its time
+  stages << "\nFast voting, 1 thread, by stage (s; 'index' is the rest: the (mesh, D) index and the"
+            " neighbourhoods, built per transform; 'candidates' includes the test at m):\n\n"
+            "| eps_SIM | total | index | boundary | candidates | locality | axial | support |"
+            " candidates | after locality | after axial |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for(double eps_sim : thresholds)
   {
     const Pairs pairs = similar_pairs(m, D, sdf, areas, eps_sim);
@@ -244,7 +250,14 @@ void versus_reference(const std::string& path, std::size_t n, const std::vector<
               << (t_setup + t_ref) / (t_setup + t_seq) << "x | " << (same_pairs ? "yes" : "NO") << " | "
               << std::scientific << std::setprecision(1) << max_rel << std::defaultfloat << " | "
               << bit_different << " |" << std::endl;
+    double staged = 0.;
+    for(double x : seq.stage_seconds) staged += x;
+    stages << "| " << eps_sim << std::fixed << std::setprecision(4) << " | " << t_seq << " | " << t_seq - staged;
+    for(double x : seq.stage_seconds) stages << " | " << x;
+    stages << " | " << seq.number_of_candidate_pairs << " | " << seq.number_of_pairs_after_locality << " | "
+           << seq.number_of_pairs_after_axial << " |\n" << std::defaultfloat;
   }
+  std::cout << stages.str();
   std::cout << "\n(mesh, D) index built once for the shared-index column: " << std::fixed << std::setprecision(4)
             << t_index << " s\n";
 }
@@ -628,7 +641,7 @@ int main(int argc, char** argv)
   std::vector<std::string> meshes = {"camel.off", "man.off"};
   std::size_t reference_samples = 300;
   int threads = 0;
-  bool floor_study = false, robust = false;
+  bool floor_study = false, robust = false, scaling_study = true;
   std::size_t robustness_samples = 1000;
   std::vector<double> reference_thresholds = {IRS::default_similarity_threshold, 0.05, 0.1, 0.2};
   std::string faust;
@@ -640,6 +653,7 @@ int main(int argc, char** argv)
     else if(a == "--threads" && i + 1 < argc) threads = std::stoi(argv[++i]);
     else if(a == "--reference-samples" && i + 1 < argc) reference_samples = std::stoul(argv[++i]);
     else if(a == "--floor-study") floor_study = true;
+    else if(a == "--no-scaling") scaling_study = false;
     else if(a == "--robustness") robust = true;
     else if(a == "--robustness-samples" && i + 1 < argc) robustness_samples = std::stoul(argv[++i]);
     else if(a == "--reference-eps" && i + 1 < argc)
@@ -668,6 +682,7 @@ int main(int argc, char** argv)
   }
   for(const std::string& name : meshes)
   {
+    if(!scaling_study) break;
     std::string path;
     if(find_file(dirs, name, path)) scaling(path, sample_counts);
     else std::cout << "\n" << name << " not found in the given directories\n";

@@ -27,14 +27,21 @@ namespace internal {
 // order, the labelling depends only on the neighbour relation, not on how the
 // caller computes it (brute force or precomputed lists give the same labels).
 //
-// Returns the number of clusters.
+// Returns the number of clusters. `buffers`: work lists, for callers that
+// cluster many small sets (their capacity is kept from one call to the next).
+struct Dbscan_buffers
+{
+  std::vector<std::size_t> nbrs, seeds;
+};
+
 template <class NeighborFunction>
 std::size_t dbscan(std::size_t n, std::size_t min_points, NeighborFunction neighbors,
-                   std::vector<int>& labels)
+                   std::vector<int>& labels, Dbscan_buffers& buffers)
 {
   const int undefined = -2, noise = -1;
   labels.assign(n, undefined);
-  std::vector<std::size_t> nbrs, seeds;
+  std::vector<std::size_t>& nbrs = buffers.nbrs;
+  std::vector<std::size_t>& seeds = buffers.seeds;
   int cluster = 0;
   for(std::size_t i = 0; i < n; ++i)
   {
@@ -63,6 +70,14 @@ std::size_t dbscan(std::size_t n, std::size_t min_points, NeighborFunction neigh
     ++cluster;
   }
   return std::size_t(cluster);
+}
+
+template <class NeighborFunction>
+std::size_t dbscan(std::size_t n, std::size_t min_points, NeighborFunction neighbors,
+                   std::vector<int>& labels)
+{
+  Dbscan_buffers buffers;
+  return dbscan(n, min_points, neighbors, labels, buffers);
 }
 
 } // namespace internal

@@ -294,9 +294,16 @@ private:
     // The bounds, read from the rows of D. (A copy of D in block order would
     // make the reads of a block contiguous, but its allocation and copy cost
     // more than they save: page faults on n x V floats, then reads of a few
-    // blocks per pair.)
+    // blocks per pair.) Each row is read in vertex order (sequentially: the
+    // block order scatters the reads over the row), each vertex raising the
+    // bound of its block; a block's first vertex is tagged and leaves it
+    // alone. (The maximum does not depend on the order: e is never NaN.)
     const std::size_t n = number_of_samples_;
     const float inf = std::numeric_limits<float>::infinity();
+    const std::uint32_t first_tag = std::uint32_t(1) << 31;
+    std::vector<std::uint32_t> tag(block_of);
+    for(std::size_t blk = 0; blk < nblocks; ++blk)
+      tag[block_vertices_[block_offsets_[blk]]] |= first_tag;
     block_info_.resize(2 * n * nblocks);
     for_each_index(n, [&](std::size_t x) {
       const float* r = D_->row(x);
@@ -304,17 +311,22 @@ private:
       float* info = block_info_.data() + 2 * x * nblocks;
       for(std::size_t blk = 0; blk < nblocks; ++blk)
       {
-        const float dc = r[bv[block_offsets_[blk]]];
-        float bound = 0.f;
-        for(std::size_t k = block_offsets_[blk] + 1; k < block_offsets_[blk + 1]; ++k)
-        {
-          // |d(x,v) - d(x,c)|; infinite if exactly one is finite or d(x,v) is NaN
-          const float dv = r[bv[k]];
-          const bool mismatch = (std::isfinite(dc) != std::isfinite(dv)) || std::isnan(dv);
-          const float e = mismatch ? inf : (std::isfinite(dv) ? std::abs(dv - dc) : 0.f);
-          bound = (std::max)(bound, e);
-        }
-        info[2 * blk] = dc;
+        info[2 * blk] = r[bv[block_offsets_[blk]]];
+        info[2 * blk + 1] = 0.f;
+      }
+      for(std::size_t v = 0; v < nv; ++v)
+      {
+        const std::uint32_t t = tag[v], blk = t & ~first_tag;
+        const float dc = info[2 * blk];
+        // |d(x,v) - d(x,c)|; infinite if exactly one is finite or d(x,v) is NaN
+        const float dv = r[v];
+        const bool mismatch = (std::isfinite(dc) != std::isfinite(dv)) || std::isnan(dv);
+        const float e = (t & first_tag) ? 0.f : (mismatch ? inf : (std::isfinite(dv) ? std::abs(dv - dc) : 0.f));
+        info[2 * blk + 1] = (std::max)(info[2 * blk + 1], e);
+      }
+      for(std::size_t blk = 0; blk < nblocks; ++blk)
+      {
+        const float bound = info[2 * blk + 1];
         // widened by more than the rounding of the difference
         info[2 * blk + 1] = float(double(bound) * (1. + 2e-6));
       }
@@ -335,6 +347,7 @@ public:
     std::vector<unsigned char> block_scan;    // beta: blocks whose edges are tested
     std::vector<std::uint32_t> found;         // beta, with repetitions
     std::vector<std::uint64_t> vertex_bits;   // beta: a bit per vertex, zero between calls
+    std::vector<std::uint32_t> undecided;     // beta: blocks the bounds leave undecided
     std::vector<std::uint32_t> negative_mask, positive_mask, zero_mask; // beta: signs of f per block
     std::vector<std::uint32_t> sample_stamp;  // membership in U
     std::vector<std::uint64_t> sample_bits;   // U as a bit set, zero between calls
@@ -352,6 +365,7 @@ public:
     std::vector<Candidate> candidates;
     std::vector<std::size_t> points;          // U, increasing sample indices
     std::vector<int> labels;
+    Dbscan_buffers dbscan_buffers;
     std::vector<std::size_t> kept;            // indices into candidates
     std::vector<std::size_t> cursor;          // grid construction
     std::vector<std::uint32_t> ss, ts;        // the kept pairs' samples
@@ -635,7 +649,11 @@ private:
     // throughout, 3: no finite value (another component), 4: mixed or zero.
     // The bound decides most blocks from their first vertex alone (then f is
     // finite and of one strict sign at every vertex of the block); the others
-    // are classified vertex by vertex.
+    // (0 until then) are classified vertex by vertex once all the blocks have
+    // been seen, their reads of the rows of a and b (cache misses: the rows
+    // change at every pair) prefetched meanwhile.
+    std::vector<std::uint32_t>& undecided = sc.undecided;
+    undecided.clear();
     for(std::size_t blk = 0; blk < nblocks; ++blk)
     {
       const float la = ia[2 * blk + 1], lb = ib[2 * blk + 1];
@@ -653,20 +671,34 @@ private:
         if(fc < -bound) status = 1;
         else if(fc > bound) status = 2;
       }
-      std::uint32_t n_mask = status == 1 ? full : 0, p_mask = status == 2 ? full : 0, z_mask = 0;
       if(status == 0)
       {
-        const std::size_t first = offsets[blk];
-        for(std::uint32_t k = 0; k < size; ++k)
+        undecided.push_back(std::uint32_t(blk));
+#if defined(__GNUC__) || defined(__clang__)
+        for(std::uint32_t k = offsets[blk]; k < offsets[blk + 1]; ++k)
         {
-          const float fv = f(first + k);
-          n_mask |= std::uint32_t(fv < 0.f) << k;
-          p_mask |= std::uint32_t(fv > 0.f) << k;
-          z_mask |= std::uint32_t(fv == 0.f) << k;
+          __builtin_prefetch(pa + bverts[k]);
+          __builtin_prefetch(pb + bverts[k]);
         }
-        const unsigned bits = unsigned(n_mask != 0) | (unsigned(p_mask != 0) << 1) | (unsigned(z_mask != 0) << 2);
-        status = (bits == 1 || bits == 2) ? (unsigned char)bits : (bits == 0 ? 3 : 4);
+#endif
       }
+      status_of[blk] = status;
+      scan[blk] = 0;
+      neg[blk] = status == 1 ? full : 0; pos[blk] = status == 2 ? full : 0; zero[blk] = 0;
+    }
+    for(std::uint32_t blk : undecided)
+    {
+      const std::uint32_t first = offsets[blk], size = offsets[blk + 1] - first;
+      std::uint32_t n_mask = 0, p_mask = 0, z_mask = 0;
+      for(std::uint32_t k = 0; k < size; ++k)
+      {
+        const float fv = f(first + k);
+        n_mask |= std::uint32_t(fv < 0.f) << k;
+        p_mask |= std::uint32_t(fv > 0.f) << k;
+        z_mask |= std::uint32_t(fv == 0.f) << k;
+      }
+      const unsigned bits = unsigned(n_mask != 0) | (unsigned(p_mask != 0) << 1) | (unsigned(z_mask != 0) << 2);
+      const unsigned char status = (bits == 1 || bits == 2) ? (unsigned char)bits : (bits == 0 ? 3 : 4);
       status_of[blk] = status;
       scan[blk] = (unsigned char)(status == 4);
       neg[blk] = n_mask; pos[blk] = p_mask; zero[blk] = z_mask;
@@ -721,12 +753,12 @@ private:
             push(endpoint(first + k, first + std::uint32_t(ctz(c))));
         }
       }
-      // edges to other blocks, each once: from here unless the other block
-      // is scanned too and comes first
+      // edges to other blocks (an edge between two scanned blocks is found
+      // from both: the set of vertices below drops the repetition, which
+      // costs less than a test per edge)
       for(std::size_t k = ext_offsets[blk]; k < ext_offsets[blk + 1]; ++k)
       {
         const std::uint32_t other = ext[4 * k + 2];
-        if(scan[other] && other < blk) continue;
         const std::uint32_t bits = ext[4 * k + 3], lu = bits & 0xff, lv = bits >> 8;
         const std::uint32_t cross = (((nb >> lu) & (pos[other] >> lv)) | ((pb_ >> lu) & (neg[other] >> lv))) & 1u;
         if(cross)
@@ -931,7 +963,7 @@ private:
       }
       out.resize(old + no);
     };
-    dbscan(sc.points.size(), s_.settings.locality_min_points, neighbors, sc.labels);
+    dbscan(sc.points.size(), s_.settings.locality_min_points, neighbors, sc.labels, sc.dbscan_buffers);
 
     int cluster = -1;
     float best = std::numeric_limits<float>::infinity();

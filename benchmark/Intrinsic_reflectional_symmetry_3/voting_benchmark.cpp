@@ -25,6 +25,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/perturbed_copies.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/reference_voting.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
@@ -264,102 +265,6 @@ void versus_reference(const std::string& path, std::size_t n, const std::vector<
 
 // ---------------------------------------------------------------- robustness
 
-// A copy of `m` with Gaussian noise on every vertex: isotropic, per-axis
-// standard deviation s such that the mean displacement s * sqrt(8 / pi) is
-// `level` mean edge lengths (the paper's noise level). Box-Muller on
-// CGAL::Random, so the noise only depends on the seed.
-Mesh noisy_copy(const Mesh& m, double level, double mean_edge_length, unsigned int seed)
-{
-  Mesh out = m;
-  CGAL::Random rng(seed);
-  const double s = level * mean_edge_length / std::sqrt(8. / CGAL_PI);
-  auto gauss = [&] {
-    double u = rng.get_double();
-    while(u <= 0.) u = rng.get_double();
-    return std::sqrt(-2. * std::log(u)) * std::cos(2. * CGAL_PI * rng.get_double());
-  };
-  for(auto v : out.vertices())
-  {
-    const K::Point_3 p = out.point(v);
-    const double dx = gauss(), dy = gauss(), dz = gauss();
-    out.point(v) = K::Point_3(p.x() + s * dx, p.y() + s * dy, p.z() + s * dz);
-  }
-  return out;
-}
-
-// A copy of `m` with about `fraction` of its faces removed as `holes` small
-// holes: each hole is the set of faces incident to a ball of vertices grown
-// breadth-first from a random vertex, and holes stay at least two rings
-// apart (so the result stays a 2-manifold with boundary). `map` receives the
-// new index of each old vertex (-1: removed). Returns false if a face could
-// not be re-added (a non-manifold configuration).
-bool holed_copy(const Mesh& m, double fraction, std::size_t holes, unsigned int seed, Mesh& out,
-                std::vector<std::ptrdiff_t>& map)
-{
-  const std::size_t nv = num_vertices(m), nf = num_faces(m);
-  std::vector<char> removed_face(nf, 0), blocked(nv, 0), in_ball(nv, 0);
-  CGAL::Random rng(seed);
-  const std::size_t per_hole = (std::max)(std::size_t(1), std::size_t(fraction * double(nf) / double(holes)));
-  for(std::size_t h = 0; h < holes; ++h)
-  {
-    Mesh::Vertex_index c;
-    for(int attempt = 0;; ++attempt)
-    {
-      c = Mesh::Vertex_index(Mesh::size_type(rng.uniform_int<std::size_t>(0, nv - 1)));
-      if(!blocked[c.idx()] && !m.is_border(c)) break;
-      if(attempt > 1000) return false;
-    }
-    std::vector<Mesh::Vertex_index> ball(1, c), queue(1, c);
-    in_ball[c.idx()] = 1;
-    std::size_t count = 0;
-    auto add_faces = [&](Mesh::Vertex_index v) {
-      for(auto f : CGAL::faces_around_target(m.halfedge(v), m))
-        if(f != Mesh::null_face() && !removed_face[f.idx()]) { removed_face[f.idx()] = 1; ++count; }
-    };
-    add_faces(c);
-    for(std::size_t q = 0; q < queue.size() && count < per_hole; ++q)
-      for(auto u : CGAL::vertices_around_target(m.halfedge(queue[q]), m))
-      {
-        if(count >= per_hole) break;
-        if(in_ball[u.idx()] || blocked[u.idx()]) continue;
-        in_ball[u.idx()] = 1;
-        ball.push_back(u);
-        queue.push_back(u);
-        add_faces(u);
-      }
-    // block the ball and two rings around it
-    std::vector<Mesh::Vertex_index> ring = ball;
-    for(int r = 0; r < 3; ++r)
-    {
-      std::vector<Mesh::Vertex_index> next;
-      for(auto v : ring)
-      {
-        if(blocked[v.idx()] == 1) continue;
-        blocked[v.idx()] = 1;
-        for(auto u : CGAL::vertices_around_target(m.halfedge(v), m)) next.push_back(u);
-      }
-      ring.swap(next);
-    }
-    for(auto v : ring) blocked[v.idx()] = 1;
-  }
-  out.clear();
-  map.assign(nv, -1);
-  for(auto f : m.faces())
-    if(!removed_face[f.idx()])
-      for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) map[v.idx()] = 0;
-  for(std::size_t v = 0; v < nv; ++v)
-    if(map[v] == 0) map[v] = std::ptrdiff_t(out.add_vertex(m.point(Mesh::Vertex_index(Mesh::size_type(v)))).idx());
-  for(auto f : m.faces())
-  {
-    if(removed_face[f.idx()]) continue;
-    std::vector<Mesh::Vertex_index> vs;
-    for(auto v : CGAL::vertices_around_face(m.halfedge(f), m))
-      vs.push_back(Mesh::Vertex_index(Mesh::size_type(map[v.idx()])));
-    if(out.add_face(vs) == Mesh::null_face()) return false;
-  }
-  return true;
-}
-
 // tau by vertex index for the given sample vertices: heat-method geodesics,
 // SDF signatures and similar pairs, voting, default parameters
 std::vector<double> irsa_tau(const Mesh& m, const std::vector<std::size_t>& samples, std::size_t& similar)
@@ -408,7 +313,7 @@ void robustness(const std::string& name, const Mesh& m, std::size_t n)
   for(double level : {0.1, 0.2, 0.42})
   {
     t.reset();
-    const Mesh noisy = noisy_copy(m, level, e, 7u);
+    const Mesh noisy = IRS::internal::noisy_copy(m, level, e, 7u);
     const std::vector<double> tau2 = irsa_tau(noisy, samples, similar);
     std::cout << "| " << name << " | noise " << std::setprecision(2) << level << " | " << num_vertices(noisy) << " / "
               << samples.size() << " | " << similar << " | " << std::setprecision(3)
@@ -419,7 +324,7 @@ void robustness(const std::string& name, const Mesh& m, std::size_t n)
     t.reset();
     Mesh holed;
     std::vector<std::ptrdiff_t> map;
-    if(!holed_copy(m, 0.03, holes, 11u, holed, map))
+    if(!IRS::internal::holed_copy(m, 0.03, holes, 11u, holed, map))
     {
       std::cout << "| " << name << " | " << holes << " holes | (could not cut them) | | | |" << std::endl;
       continue;

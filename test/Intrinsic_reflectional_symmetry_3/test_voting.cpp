@@ -14,6 +14,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/dbscan.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/perturbed_copies.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/reference_voting.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
@@ -490,96 +491,6 @@ TEST(Voting, FaustHumanAxisRidge)
 
 namespace {
 
-// A copy with isotropic Gaussian vertex noise whose mean displacement is
-// `level` mean edge lengths (per-axis deviation level * e / sqrt(8 / pi)).
-Mesh noisy_copy(const Mesh& m, double level, double mean_edge_length, unsigned int seed)
-{
-  Mesh out = m;
-  CGAL::Random rng(seed);
-  const double s = level * mean_edge_length / std::sqrt(8. / CGAL_PI);
-  auto gauss = [&] {
-    double u = rng.get_double();
-    while(u <= 0.) u = rng.get_double();
-    return std::sqrt(-2. * std::log(u)) * std::cos(2. * CGAL_PI * rng.get_double());
-  };
-  for(auto v : out.vertices())
-  {
-    const Point p = out.point(v);
-    const double dx = gauss(), dy = gauss(), dz = gauss();
-    out.point(v) = Point(p.x() + s * dx, p.y() + s * dy, p.z() + s * dz);
-  }
-  return out;
-}
-
-// A copy with about `fraction` of the faces removed as `holes` holes (faces
-// around breadth-first balls of vertices, two rings apart); map: old vertex
-// -> new vertex (-1: removed). False if the result would not be a manifold.
-bool holed_copy(const Mesh& m, double fraction, std::size_t holes, unsigned int seed, Mesh& out,
-                std::vector<std::ptrdiff_t>& map)
-{
-  const std::size_t nv = num_vertices(m), nf = num_faces(m);
-  std::vector<char> removed_face(nf, 0), blocked(nv, 0), in_ball(nv, 0);
-  CGAL::Random rng(seed);
-  const std::size_t per_hole = (std::max)(std::size_t(1), std::size_t(fraction * double(nf) / double(holes)));
-  for(std::size_t h = 0; h < holes; ++h)
-  {
-    Mesh::Vertex_index c;
-    for(int attempt = 0;; ++attempt)
-    {
-      c = Mesh::Vertex_index(Mesh::size_type(rng.uniform_int<std::size_t>(0, nv - 1)));
-      if(!blocked[c.idx()] && !m.is_border(c)) break;
-      if(attempt > 1000) return false;
-    }
-    std::vector<Mesh::Vertex_index> ball(1, c), queue(1, c);
-    in_ball[c.idx()] = 1;
-    std::size_t count = 0;
-    auto add_faces = [&](Mesh::Vertex_index v) {
-      for(auto f : CGAL::faces_around_target(m.halfedge(v), m))
-        if(f != Mesh::null_face() && !removed_face[f.idx()]) { removed_face[f.idx()] = 1; ++count; }
-    };
-    add_faces(c);
-    for(std::size_t q = 0; q < queue.size() && count < per_hole; ++q)
-      for(auto u : CGAL::vertices_around_target(m.halfedge(queue[q]), m))
-      {
-        if(count >= per_hole) break;
-        if(in_ball[u.idx()] || blocked[u.idx()]) continue;
-        in_ball[u.idx()] = 1;
-        ball.push_back(u);
-        queue.push_back(u);
-        add_faces(u);
-      }
-    std::vector<Mesh::Vertex_index> ring = ball;
-    for(int r = 0; r < 3; ++r)
-    {
-      std::vector<Mesh::Vertex_index> next;
-      for(auto v : ring)
-      {
-        if(blocked[v.idx()] == 1) continue;
-        blocked[v.idx()] = 1;
-        for(auto u : CGAL::vertices_around_target(m.halfedge(v), m)) next.push_back(u);
-      }
-      ring.swap(next);
-    }
-    for(auto v : ring) blocked[v.idx()] = 1;
-  }
-  out.clear();
-  map.assign(nv, -1);
-  for(auto f : m.faces())
-    if(!removed_face[f.idx()])
-      for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) map[v.idx()] = 0;
-  for(std::size_t v = 0; v < nv; ++v)
-    if(map[v] == 0) map[v] = std::ptrdiff_t(out.add_vertex(m.point(Mesh::Vertex_index(Mesh::size_type(v)))).idx());
-  for(auto f : m.faces())
-  {
-    if(removed_face[f.idx()]) continue;
-    std::vector<Mesh::Vertex_index> vs;
-    for(auto v : CGAL::vertices_around_face(m.halfedge(f), m))
-      vs.push_back(Mesh::Vertex_index(Mesh::size_type(map[v.idx()])));
-    if(out.add_face(vs) == Mesh::null_face()) return false;
-  }
-  return true;
-}
-
 // the whole transform for given sample vertices: heat geodesics, SDF
 // similarity, voting with `np`
 template <typename NP>
@@ -635,7 +546,7 @@ TEST(Voting, RobustToNoiseAndSmallHoles)
   // noisy copy), which is reported by the benchmark, not asserted here.
   for(double level : {0.1, 0.2, 0.42})
   {
-    const Mesh noisy = noisy_copy(m, level, shape.mean_edge_length, 7u);
+    const Mesh noisy = IRS::internal::noisy_copy(m, level, shape.mean_edge_length, 7u);
     const double err = relative_l2(tau, transform_of(noisy, samples, np), identity);
     std::cout << "[ snowman, noise " << level << " mean edge lengths ] relative L2 error of tau " << err << std::endl;
     if(level <= 0.2)
@@ -643,7 +554,7 @@ TEST(Voting, RobustToNoiseAndSmallHoles)
   }
   Mesh holed;
   std::vector<std::ptrdiff_t> map;
-  ASSERT_TRUE(holed_copy(m, 0.03, 6, 11u, holed, map));
+  ASSERT_TRUE(IRS::internal::holed_copy(m, 0.03, 6, 11u, holed, map));
   const double removed = 1. - double(num_faces(holed)) / double(num_faces(m));
   EXPECT_GT(removed, 0.02);
   EXPECT_LT(removed, 0.045);

@@ -152,9 +152,7 @@ double oracle_percent(const Mesh& m, const std::vector<long>& vts, const std::ve
     for(const auto& t : s.triangles)
       if(wide[t[0]] && wide[t[1]] && wide[t[2]]) copy.triangles.push_back(t);
     const IRS::internal::Repair_surface cs = IRS::internal::soup_to_surface(IRS::internal::compact_soup(copy));
-    typedef CGAL::AABB_face_graph_triangle_primitive<IRS::internal::Repair_surface> Primitive;
-    typedef CGAL::AABB_tree<CGAL::AABB_traits<IRS::internal::Repair_kernel, Primitive> > Tree;
-    Tree tree(faces(cs).first, faces(cs).second, cs);
+    IRS::internal::Repair_tree tree(faces(cs).first, faces(cs).second, cs);
     tree.accelerate_distance_queries();
     for(std::size_t v : R) worst = (std::max)(worst, std::sqrt(tree.squared_distance(s.points[v])));
   }

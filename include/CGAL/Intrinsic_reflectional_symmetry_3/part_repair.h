@@ -490,9 +490,7 @@ Part_repair_protocol_result run_part_repair_protocol(const TriangleMesh& tm, con
     for(const auto& p : pairs)
       if(is_new(p.first) || is_new(p.second)) res.new_self_intersections = true;
   }
-  typedef CGAL::AABB_face_graph_triangle_primitive<internal::Repair_surface> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<internal::Repair_kernel, Primitive> > Tree;
-  Tree tree(faces(rm).first, faces(rm).second, rm);
+  internal::Repair_tree tree(faces(rm).first, faces(rm).second, rm);
   tree.accelerate_distance_queries();
   const double diag = internal::soup_bbox_diagonal(r.points);
   double mx = 0., sum = 0.;

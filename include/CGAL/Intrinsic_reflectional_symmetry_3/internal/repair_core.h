@@ -79,9 +79,6 @@ inline void fit_plane(const std::vector<Repair_point>& pts, Repair_vector& n, Re
 /// queried by every fit of every part.
 class Icp_target
 {
-  typedef CGAL::AABB_face_graph_triangle_primitive<Repair_surface> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<Repair_kernel, Primitive> > Tree;
-
 public:
   /// `target`: triangles of a soup
   explicit Icp_target(const Repair_soup& target)
@@ -97,7 +94,7 @@ public:
 
 private:
   Repair_surface surface_;
-  Tree tree_;
+  Repair_tree tree_;
 };
 
 /// Rigid ICP (point to closest surface point, trimmed): returns T with T(src)
@@ -372,9 +369,7 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
       if(excess[v] > tau) evidence[c] += area[v];
     }
   Repair_surface surface = soup_to_surface(s);
-  typedef CGAL::AABB_face_graph_triangle_primitive<Repair_surface> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<Repair_kernel, Primitive> > Tree;
-  Tree tree(faces(surface).first, faces(surface).second, surface);
+  Repair_tree tree(faces(surface).first, faces(surface).second, surface);
   tree.accelerate_distance_queries();
   CGAL::Side_of_triangle_mesh<Repair_surface, Repair_kernel> inside(tree);
   std::vector<std::size_t> parts;

@@ -45,6 +45,9 @@ typedef Repair_kernel::Vector_3                             Repair_vector;
 typedef Repair_kernel::Plane_3                              Repair_plane;
 typedef CGAL::Surface_mesh<Repair_point>                    Repair_surface;
 typedef std::array<std::size_t, 3>                          Repair_triangle;
+/// AABB tree of a Repair_surface's triangles (closest points, inside tests)
+typedef CGAL::AABB_tree<CGAL::AABB_traits<Repair_kernel, CGAL::AABB_face_graph_triangle_primitive<Repair_surface> > >
+  Repair_tree;
 
 struct Repair_soup
 {

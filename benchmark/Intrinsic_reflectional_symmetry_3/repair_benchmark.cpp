@@ -5,7 +5,8 @@
 // Symmetry-driven part repair (paper Sec. 4.2) by the package's protocol
 // (run_part_repair_protocol() in part_repair.h: cut limbs off with a plane,
 // cap, run the pipeline, repair, measure), on the generated stick figure and
-// on FAUST (DATA_DIR/faust_5k, skipped when absent): per shape, one limb
+// on FAUST (DATA_DIR/faust_5k, skipped when absent): per shape, the complete
+// shape (row "none": nothing is missing, so "parts" must be 0), one limb
 // (the right forearm, cut 0.2 from the hand tip) and two limbs (that forearm
 // and the other side's lower leg, cut 0.3 from the foot tip). The limb tips
 // are found through the data set's correspondences (corres/X.vts): the
@@ -229,6 +230,7 @@ int main(int argc, char** argv)
     arm.length = 0.7;
     leg.tip = extreme_vertex(m, [](const K::Point_3& p) { return p.x() < 0. ? -p.z() : -1e300; });
     leg.length = 0.8;
+    run(o, "stick", "none", m, {});
     run(o, "stick", "arm", m, {arm});
     run(o, "stick", "arm+leg", m, {arm, leg});
     for(Mesh::Vertex_index v : vertices(m))
@@ -275,6 +277,7 @@ int main(int argc, char** argv)
       std::printf("%-12s %-16s oracle %.2f %%\n", name.c_str(), "forearm+leg", oracle_percent(m, xv, sv, {hand, foot}));
       continue;
     }
+    run(o, name, "none", m, {}); // the complete shape: nothing may be added
     run(o, name, "forearm", m, {hand}, oracle_percent(m, xv, sv, {hand}));
     run(o, name, "forearm+leg", m, {hand, foot}, oracle_percent(m, xv, sv, {hand, foot}));
   }

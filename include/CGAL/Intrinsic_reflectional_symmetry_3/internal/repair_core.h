@@ -46,6 +46,7 @@ struct Repair_settings
 {
   double threshold = 0.02;          // tau, as a fraction of the bounding-box diagonal
   double minimum_part_area = 0.005; // fraction of the total area
+  double minimum_mirror_agreement = 0.8; // fraction of the total area (see repair_core())
   unsigned icp_iterations = 30;
 };
 
@@ -56,6 +57,7 @@ struct Repair_core_result
   std::vector<std::size_t> part_sizes;
   std::vector<double> icp_rms;
   std::vector<bool> faired;
+  double mirror_agreement = 0.; // fraction of the area where the map agrees with the plane
 };
 
 inline std::string repair_failure(const std::string& why) { return "part repair is not possible: " + why; }
@@ -336,6 +338,22 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     pc = Repair_point(mid.x(), mid.y(), mid.z());
   }
   result.plane = {{pn.x(), pn.y(), pn.z(), -(pn * (pc - CGAL::ORIGIN))}};
+  // The copies are reflected across this plane, so it must be a mirror of
+  // most of the shape: where the map's partner of a vertex is not within
+  // 2 tau of its reflection, the two disagree. A curve whose reflection agrees
+  // with the plane on less than `minimum_mirror_agreement` of the area detects
+  // nothing: on complete FAUST shapes, once the left-right curve has detected
+  // nothing, the curves of other symmetries (front-back, or noise) that the
+  // later rounds find reach 0.13-0.76 and "detect" missing parts in 12 of 19
+  // shapes; true detections reach 0.84-0.97 (FAUST, one and two limbs cut,
+  // where the copy lands within 6 % of the diagonal; stick figure 0.94-0.97).
+  double agreeing = 0.;
+  for(std::size_t v = 0; v < n; ++v)
+    if(partner[v] >= 0 && std::size_t(partner[v]) < n &&
+       CGAL::squared_distance(reflect_point(s.points[v], pn, pc), s.points[std::size_t(partner[v])]) <= CGAL::square(2. * tau))
+      agreeing += area[v];
+  result.mirror_agreement = total_area > 0. ? agreeing / total_area : 0.;
+  const bool is_mirror = result.mirror_agreement >= rs.minimum_mirror_agreement;
   if(axis.empty()) // geodesic distances to the axis need sources: the vertices nearest the plane
     for(std::size_t v = 0; v < n; ++v)
       if(std::abs((s.points[v] - pc) * pn) <= 0.5 * e) axis.push_back(v);
@@ -373,7 +391,7 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   tree.accelerate_distance_queries();
   CGAL::Side_of_triangle_mesh<Repair_surface, Repair_kernel> inside(tree);
   std::vector<std::size_t> parts;
-  for(std::size_t c = 0; c < nc; ++c)
+  for(std::size_t c = 0; c < nc && is_mirror; ++c)
   {
     if(comp_area[c] < rs.minimum_part_area * total_area) continue;
     // An orphan part is missing on the other side when its reflection across

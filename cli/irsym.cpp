@@ -279,16 +279,14 @@ irsym::Json repair_outputs(const Mesh& work, const IRS::Geodesic_distance_matrix
   Mesh repaired;
   IRS::Part_repair_report r;
   try {
-    // the curves, each with its own map (not the CLI's map: the repair's is
-    // not locally refined, see part_repair.h); if none detects a missing
-    // part, the overload that extracts again without the ones that detect
-    // nothing (a damaged body's left-right curve can rank behind its
-    // front-back one)
-    r = IRS::repair_missing_parts(work, D, curves, repaired);
-    if(r.number_of_parts == 0)
-      r = IRS::repair_missing_parts(work, D, voting,
-                                    boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
-                                    repaired);
+    // from the transform: its first round tries the curves above (extracted
+    // with the same defaults), each with its own map (not the CLI's map: the
+    // repair's is not locally refined, see part_repair.h); the later rounds
+    // extract again without the ones that detect nothing (a damaged body's
+    // left-right curve can rank behind its front-back one)
+    r = IRS::repair_missing_parts(work, D, voting,
+                                  boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
+                                  repaired);
   }
   catch(const IRS::Input_error& e) {
     return j.add("possible", false).add("missing_part_found", false).add("error", std::string(e.what()));

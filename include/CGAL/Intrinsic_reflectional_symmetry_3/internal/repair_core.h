@@ -342,11 +342,13 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   // most of the shape: where the map's partner of a vertex is not within
   // 2 tau of its reflection, the two disagree. A curve whose reflection agrees
   // with the plane on less than `minimum_mirror_agreement` of the area detects
-  // nothing: on complete FAUST shapes, once the left-right curve has detected
-  // nothing, the curves of other symmetries (front-back, or noise) that the
-  // later rounds find reach 0.13-0.76 and "detect" missing parts in 12 of 19
-  // shapes; true detections reach 0.84-0.97 (FAUST, one and two limbs cut,
-  // where the copy lands within 6 % of the diagonal; stick figure 0.94-0.97).
+  // nothing: on complete FAUST shapes the curves of other symmetries (most
+  // found by the later rounds, once the left-right curve has detected
+  // nothing) reach 0.13-0.76 and "detected" missing parts in 12 of 19 shapes;
+  // the left-right curve reaches 0.84-0.97 where one or two limbs are cut
+  // (stick figure 0.94-0.97). Cut shapes whose cuts only other curves
+  // detected (FAUST 004, 007, 008: 0.16-0.75) had their copies 8-16 % of the
+  // diagonal off.
   double agreeing = 0.;
   for(std::size_t v = 0; v < n; ++v)
     if(partner[v] >= 0 && std::size_t(partner[v]) < n &&

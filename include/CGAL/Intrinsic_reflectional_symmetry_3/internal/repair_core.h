@@ -345,10 +345,10 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   // nothing: on complete FAUST shapes the curves of other symmetries (most
   // found by the later rounds, once the left-right curve has detected
   // nothing) reach 0.13-0.76 and "detected" missing parts in 12 of 19 shapes;
-  // the left-right curve reaches 0.84-0.97 where one or two limbs are cut
-  // (stick figure 0.94-0.97). Cut shapes whose cuts only other curves
-  // detected (FAUST 004, 007, 008: 0.16-0.75) had their copies 8-16 % of the
-  // diagonal off.
+  // where one or two limbs are cut, the curve that detects them reaches
+  // 0.84-0.97 on 16 of 19 FAUST shapes (stick figure 0.94-0.97); on the
+  // other three (004, 007, 008, posed: a left-right curve with a poor map, or
+  // another curve) 0.16-0.75, and their copies were 8-16 % of the diagonal off.
   double agreeing = 0.;
   for(std::size_t v = 0; v < n; ++v)
     if(partner[v] >= 0 && std::size_t(partner[v]) < n &&

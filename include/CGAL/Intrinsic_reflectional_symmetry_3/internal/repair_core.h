@@ -57,7 +57,6 @@ struct Repair_core_result
   std::vector<std::size_t> part_sizes;
   std::vector<double> icp_rms;
   std::vector<bool> faired;
-  double mirror_agreement = 0.; // fraction of the area where the map agrees with the plane
 };
 
 inline std::string repair_failure(const std::string& why) { return "part repair is not possible: " + why; }
@@ -354,8 +353,7 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     if(partner[v] >= 0 && std::size_t(partner[v]) < n &&
        CGAL::squared_distance(reflect_point(s.points[v], pn, pc), s.points[std::size_t(partner[v])]) <= CGAL::square(2. * tau))
       agreeing += area[v];
-  result.mirror_agreement = total_area > 0. ? agreeing / total_area : 0.;
-  const bool is_mirror = result.mirror_agreement >= rs.minimum_mirror_agreement;
+  if(!(total_area > 0. && agreeing >= rs.minimum_mirror_agreement * total_area)) { result.mesh = s; return result; }
   if(axis.empty()) // geodesic distances to the axis need sources: the vertices nearest the plane
     for(std::size_t v = 0; v < n; ++v)
       if(std::abs((s.points[v] - pc) * pn) <= 0.5 * e) axis.push_back(v);
@@ -393,7 +391,7 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
   tree.accelerate_distance_queries();
   CGAL::Side_of_triangle_mesh<Repair_surface, Repair_kernel> inside(tree);
   std::vector<std::size_t> parts;
-  for(std::size_t c = 0; c < nc && is_mirror; ++c)
+  for(std::size_t c = 0; c < nc; ++c)
   {
     if(comp_area[c] < rs.minimum_part_area * total_area) continue;
     // An orphan part is missing on the other side when its reflection across

@@ -34,6 +34,7 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -498,18 +499,17 @@ Part_repair_protocol_result run_part_repair_protocol(const TriangleMesh& tm, con
   internal::Repair_tree tree(faces(rm).first, faces(rm).second, rm);
   tree.accelerate_distance_queries();
   const double diag = internal::soup_bbox_diagonal(r.points);
-  double mx = 0., sum = 0.;
+  double sum = 0.;
   std::vector<double> mx_cut(cuts.size(), 0.);
   for(std::size_t i = 0; i < removed_points.size(); ++i)
   {
     const double d = std::sqrt(tree.squared_distance(removed_points[i]));
-    mx = (std::max)(mx, d);
     mx_cut[cut_of[i]] = (std::max)(mx_cut[cut_of[i]], d);
     sum += d;
   }
   if(!removed_points.empty() && diag > 0.)
   {
-    res.max_distance = 100. * mx / diag;
+    res.max_distance = 100. * *std::max_element(mx_cut.begin(), mx_cut.end()) / diag;
     for(double m : mx_cut) res.max_distance_per_cut.push_back(100. * m / diag);
     res.mean_distance = 100. * sum / double(removed_points.size()) / diag;
   }

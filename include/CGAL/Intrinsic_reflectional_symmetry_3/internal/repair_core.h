@@ -575,43 +575,48 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
       const Repair_vector d = p - rc;
       rad = (std::max)(rad, std::sqrt((d - (d * rn) * rn).squared_length()));
     }
-    const double gap = 0.5 * rad + 2. * e;
-    std::vector<char> cand(n, 0);
-    std::size_t seed = n;
-    double seed_d = std::numeric_limits<double>::infinity();
-    for(std::size_t v = 0; v < n; ++v)
-    {
-      if(in_part[v] || removed[v]) continue;
-      const Repair_vector d = s.points[v] - rc;
-      const double along = d * rn, across = std::sqrt((d - along * rn).squared_length());
-      if(along > -gap && across < 1.5 * rad)
-      {
-        cand[v] = 1;
-        if(d.squared_length() < seed_d) { seed_d = d.squared_length(); seed = v; }
-      }
-    }
-    if(seed == n)
-      throw Input_error(Input_problem::invalid_parameter,
-                        repair_failure("the mirrored part does not meet the surface (no place to attach it)"), O.front());
-    std::vector<std::ptrdiff_t> cl;
-    label_components(nb, cand, cl);
-    std::vector<char> zone(n, 0);
-    for(std::size_t v = 0; v < n; ++v) zone[v] = (cl[v] == cl[seed]);
-    fill_enclosed(nb, area, zone);
-    // the faces removed: a disk-like region, so that its border is one simple loop
+    // The zone starts a gap before the ring. Where the copy's base lies
+    // beyond the end of the stump (its base on the intact side need not
+    // mirror the cut), nothing is there: the gap grows until the zone reaches
+    // the stump, and the seam bridges it.
+    const double first_gap = 0.5 * rad + 2. * e;
     Placed pl;
-    for(std::size_t f : clean_part_region(s, zone))
+    for(double gap = first_gap; pl.zone.empty() && gap <= first_gap + 2. * rad; gap += 0.5 * rad)
     {
-      if(removed_face[f]) continue;
-      for(std::size_t v : s.triangles[f])
+      std::vector<char> cand(n, 0);
+      std::size_t seed = n;
+      double seed_d = std::numeric_limits<double>::infinity();
+      for(std::size_t v = 0; v < n; ++v)
       {
-        if(in_part[v])
-          throw Input_error(Input_problem::invalid_parameter,
-                            repair_failure("the mirrored part overlaps the part it copies"), v);
-        pl.zone.push_back(v);
-        removed[v] = 1;
+        if(in_part[v] || removed[v]) continue;
+        const Repair_vector d = s.points[v] - rc;
+        const double along = d * rn, across = std::sqrt((d - along * rn).squared_length());
+        if(along > -gap && across < 1.5 * rad)
+        {
+          cand[v] = 1;
+          if(d.squared_length() < seed_d) { seed_d = d.squared_length(); seed = v; }
+        }
       }
-      removed_face[f] = 1;
+      if(seed == n) continue;
+      std::vector<std::ptrdiff_t> cl;
+      label_components(nb, cand, cl);
+      std::vector<char> zone(n, 0);
+      for(std::size_t v = 0; v < n; ++v) zone[v] = (cl[v] == cl[seed]);
+      fill_enclosed(nb, area, zone);
+      // the faces removed: a disk-like region, so that its border is one simple loop
+      for(std::size_t f : clean_part_region(s, zone))
+      {
+        if(removed_face[f]) continue;
+        for(std::size_t v : s.triangles[f])
+        {
+          if(in_part[v])
+            throw Input_error(Input_problem::invalid_parameter,
+                              repair_failure("the mirrored part overlaps the part it copies"), v);
+          pl.zone.push_back(v);
+          removed[v] = 1;
+        }
+        removed_face[f] = 1;
+      }
     }
     if(pl.zone.empty())
       throw Input_error(Input_problem::invalid_parameter,

@@ -578,7 +578,19 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
     // The zone starts a gap before the ring. Where the copy's base lies
     // beyond the end of the stump (its base on the intact side need not
     // mirror the cut), nothing is there: the gap grows until the zone reaches
-    // the stump, and the seam bridges it.
+    // the stump, and the seam bridges it. Each vertex's position along the
+    // ring's axis and whether it lies within the cylinder around that axis
+    // (not in a part, not already replaced) do not depend on the gap.
+    std::vector<double> along(n, 0.), to_centre(n, 0.);
+    std::vector<char> in_cylinder(n, 0);
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      if(in_part[v] || removed[v]) continue;
+      const Repair_vector d = s.points[v] - rc;
+      along[v] = d * rn;
+      to_centre[v] = d.squared_length();
+      in_cylinder[v] = std::sqrt((d - along[v] * rn).squared_length()) < 1.5 * rad;
+    }
     const double first_gap = 0.5 * rad + 2. * e;
     Placed pl;
     for(double gap = first_gap; pl.zone.empty() && gap <= first_gap + 2. * rad; gap += 0.5 * rad)
@@ -587,16 +599,11 @@ inline Repair_core_result repair_core(const Repair_soup& s, const std::vector<st
       std::size_t seed = n;
       double seed_d = std::numeric_limits<double>::infinity();
       for(std::size_t v = 0; v < n; ++v)
-      {
-        if(in_part[v] || removed[v]) continue;
-        const Repair_vector d = s.points[v] - rc;
-        const double along = d * rn, across = std::sqrt((d - along * rn).squared_length());
-        if(along > -gap && across < 1.5 * rad)
+        if(in_cylinder[v] && along[v] > -gap)
         {
           cand[v] = 1;
-          if(d.squared_length() < seed_d) { seed_d = d.squared_length(); seed = v; }
+          if(to_centre[v] < seed_d) { seed_d = to_centre[v]; seed = v; }
         }
-      }
       if(seed == n) continue;
       std::vector<std::ptrdiff_t> cl;
       label_components(nb, cand, cl);

@@ -159,6 +159,40 @@ inline std::vector<double> soup_dijkstra(const Repair_soup& s, const std::vector
   return d;
 }
 
+/// Whether `target` is within edge-graph distance `radius` of `source`: a
+/// Dijkstra from `source` that stops at `radius`. `d` is scratch, of the
+/// soup's size and all +infinity on entry; it is so again on return, so that
+/// many calls cost only the vertices within `radius`.
+inline bool soup_within(const Repair_soup& s, const std::vector<std::vector<std::size_t> >& nb, std::size_t source,
+                        std::size_t target, double radius, std::vector<double>& d)
+{
+  typedef std::pair<double, std::size_t> Item;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item> > q;
+  std::vector<std::size_t> touched(1, source);
+  d[source] = 0.;
+  q.push(Item(0., source));
+  bool found = false;
+  while(!q.empty())
+  {
+    const Item it = q.top();
+    q.pop();
+    if(it.first > d[it.second]) continue;
+    if(it.second == target) { found = true; break; }
+    for(std::size_t w : nb[it.second])
+    {
+      const double dw = it.first + std::sqrt(CGAL::squared_distance(s.points[it.second], s.points[w]));
+      if(dw <= radius && dw < d[w])
+      {
+        if(d[w] == std::numeric_limits<double>::infinity()) touched.push_back(w);
+        d[w] = dw;
+        q.push(Item(dw, w));
+      }
+    }
+  }
+  for(std::size_t v : touched) d[v] = std::numeric_limits<double>::infinity();
+  return found;
+}
+
 inline double soup_mean_edge_length(const Repair_soup& s)
 {
   double sum = 0.;

@@ -52,6 +52,7 @@
 #include <iostream>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace IRS = CGAL::Intrinsic_reflectional_symmetry_3;
@@ -237,13 +238,13 @@ int main(int argc, char** argv)
     run(o, "stick", "arm", m, {arm});
     run(o, "stick", "arm+leg", m, {arm, leg});
     if(o.cut_heights)
-      for(const IRS::Limb_cut& limb : {arm, leg})
+      for(const auto& limb : {std::make_pair("arm", arm), std::make_pair("leg", leg)})
         for(int tenths = 4; tenths <= 12; ++tenths)
         {
-          IRS::Limb_cut c = limb;
+          IRS::Limb_cut c = limb.second;
           c.length = 0.1 * tenths;
           char name[32];
-          std::snprintf(name, sizeof name, "%s@%.1f", limb.tip == arm.tip ? "arm" : "leg", c.length);
+          std::snprintf(name, sizeof name, "%s@%.1f", limb.first, c.length);
           run(o, "stick", name, m, {c});
         }
     for(Mesh::Vertex_index v : vertices(m))

@@ -137,47 +137,23 @@ inline std::vector<std::vector<std::size_t> > soup_neighbours(const Repair_soup&
   return nb;
 }
 
-/// edge-graph Dijkstra distances from a set of vertices of a soup
-inline std::vector<double> soup_dijkstra(const Repair_soup& s, const std::vector<std::vector<std::size_t> >& nb,
-                                         const std::vector<std::size_t>& sources)
+/// Edge-graph Dijkstra from `sources` into `d` (+infinity where not reached),
+/// relaxing only up to `radius` and stopping once `target` is settled; every
+/// vertex given a distance is appended to `touched`. Returns whether `target`
+/// was settled.
+inline bool soup_dijkstra_bounded(const Repair_soup& s, const std::vector<std::vector<std::size_t> >& nb,
+                                  const std::vector<std::size_t>& sources, double radius, std::size_t target,
+                                  std::vector<double>& d, std::vector<std::size_t>& touched)
 {
-  std::vector<double> d(s.points.size(), std::numeric_limits<double>::infinity());
   typedef std::pair<double, std::size_t> Item;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item> > q;
-  for(std::size_t v : sources) { d[v] = 0.; q.push(Item(0., v)); }
+  for(std::size_t v : sources) { d[v] = 0.; touched.push_back(v); q.push(Item(0., v)); }
   while(!q.empty())
   {
     const Item it = q.top();
     q.pop();
     if(it.first > d[it.second]) continue;
-    for(std::size_t w : nb[it.second])
-    {
-      const double dw = it.first + std::sqrt(CGAL::squared_distance(s.points[it.second], s.points[w]));
-      if(dw < d[w]) { d[w] = dw; q.push(Item(dw, w)); }
-    }
-  }
-  return d;
-}
-
-/// Whether `target` is within edge-graph distance `radius` of `source`: a
-/// Dijkstra from `source` that stops at `radius`. `d` is scratch, of the
-/// soup's size and all +infinity on entry; it is so again on return, so that
-/// many calls cost only the vertices within `radius`.
-inline bool soup_within(const Repair_soup& s, const std::vector<std::vector<std::size_t> >& nb, std::size_t source,
-                        std::size_t target, double radius, std::vector<double>& d)
-{
-  typedef std::pair<double, std::size_t> Item;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item> > q;
-  std::vector<std::size_t> touched(1, source);
-  d[source] = 0.;
-  q.push(Item(0., source));
-  bool found = false;
-  while(!q.empty())
-  {
-    const Item it = q.top();
-    q.pop();
-    if(it.first > d[it.second]) continue;
-    if(it.second == target) { found = true; break; }
+    if(it.second == target) return true;
     for(std::size_t w : nb[it.second])
     {
       const double dw = it.first + std::sqrt(CGAL::squared_distance(s.points[it.second], s.points[w]));
@@ -189,6 +165,27 @@ inline bool soup_within(const Repair_soup& s, const std::vector<std::vector<std:
       }
     }
   }
+  return false;
+}
+
+/// edge-graph Dijkstra distances from a set of vertices of a soup
+inline std::vector<double> soup_dijkstra(const Repair_soup& s, const std::vector<std::vector<std::size_t> >& nb,
+                                         const std::vector<std::size_t>& sources)
+{
+  std::vector<double> d(s.points.size(), std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> touched;
+  soup_dijkstra_bounded(s, nb, sources, std::numeric_limits<double>::infinity(), std::size_t(-1), d, touched);
+  return d;
+}
+
+/// Whether `target` is within edge-graph distance `radius` of `source`. `d`
+/// is scratch, of the soup's size and all +infinity on entry; it is so again
+/// on return, so that many calls cost only the vertices within `radius`.
+inline bool soup_within(const Repair_soup& s, const std::vector<std::vector<std::size_t> >& nb, std::size_t source,
+                        std::size_t target, double radius, std::vector<double>& d)
+{
+  std::vector<std::size_t> touched;
+  const bool found = soup_dijkstra_bounded(s, nb, {source}, radius, target, d, touched);
   for(std::size_t v : touched) d[v] = std::numeric_limits<double>::infinity();
   return found;
 }

@@ -296,18 +296,17 @@ private:
     // more than they save: page faults on n x V floats, then reads of a few
     // blocks per pair.) Each row is read in vertex order (sequentially: the
     // block order scatters the reads over the row), each vertex raising the
-    // bound of its block; a block's first vertex is tagged and leaves it
-    // alone. (The maximum does not depend on the order: e is never NaN.)
+    // bound of its block. A term |d(x,v) - d(x,c)| is computed without
+    // branches: infinite where exactly one of the two is finite or either is
+    // NaN, 0 where both are infinite (another component), so c's own term is
+    // 0 unless d(x,c) is NaN. (The maximum does not depend on the order.)
     const std::size_t n = number_of_samples_;
     const float inf = std::numeric_limits<float>::infinity();
-    const std::uint32_t first_tag = std::uint32_t(1) << 31;
-    std::vector<std::uint32_t> tag(block_of);
-    for(std::size_t blk = 0; blk < nblocks; ++blk)
-      tag[block_vertices_[block_offsets_[blk]]] |= first_tag;
     block_info_.resize(2 * n * nblocks);
     for_each_index(n, [&](std::size_t x) {
       const float* r = D_->row(x);
       const std::uint32_t* bv = block_vertices_.data();
+      const std::uint32_t* of = block_of.data();
       float* info = block_info_.data() + 2 * x * nblocks;
       for(std::size_t blk = 0; blk < nblocks; ++blk)
       {
@@ -316,13 +315,10 @@ private:
       }
       for(std::size_t v = 0; v < nv; ++v)
       {
-        const std::uint32_t t = tag[v], blk = t & ~first_tag;
-        const float dc = info[2 * blk];
-        // |d(x,v) - d(x,c)|; infinite if exactly one is finite or d(x,v) is NaN
-        const float dv = r[v];
-        const bool mismatch = (std::isfinite(dc) != std::isfinite(dv)) || std::isnan(dv);
-        const float e = (t & first_tag) ? 0.f : (mismatch ? inf : (std::isfinite(dv) ? std::abs(dv - dc) : 0.f));
-        info[2 * blk + 1] = (std::max)(info[2 * blk + 1], e);
+        const std::uint32_t blk = of[v];
+        const float dc = info[2 * blk], dv = r[v];
+        const float e = dv == dc ? 0.f : std::abs(dv - dc);
+        info[2 * blk + 1] = (std::max)(info[2 * blk + 1], e == e ? e : inf);
       }
       for(std::size_t blk = 0; blk < nblocks; ++blk)
       {

@@ -207,6 +207,22 @@ TEST(Repair, LegCutAtSeveralHeights)
   }
 }
 
+// Cut 0.9 from the foot, at 1000 samples, the leg's orphan region runs up
+// the inner thigh to the crotch: its base is no ring across the leg, and the
+// zone the copy replaces reached the part itself ("the mirrored part
+// overlaps the part it copies"). The repair is retried with the part cut to
+// the leg's end (repair_core()).
+TEST(Repair, LegCutHighAtMoreSamples)
+{
+  const Mesh m = IRS::generate_stick_figure<Mesh>(stick_vertices).mesh;
+  IRS::Limb_cut cut = left_leg(m);
+  cut.length = 0.9;
+  Mesh damaged, repaired;
+  const IRS::Part_repair_protocol_result r = IRS::run_part_repair_protocol(
+    m, {cut}, damaged, repaired, IRS::parameters::number_of_samples(1000));
+  expect_good_repair(r, 1);
+}
+
 // The same for the arm. Cut 0.9 from the hand, the damage tilts the mirror
 // plane by 6 degrees, and a patch on the side of the stump, whose reflection
 // then misses the intact arm, was taken for a second missing part and copied

@@ -111,6 +111,16 @@ void expect_good_repair(const IRS::Part_repair_protocol_result& r, std::size_t p
   EXPECT_EQ(r.max_distance, *std::max_element(r.max_distance_per_cut.begin(), r.max_distance_per_cut.end()));
 }
 
+// one limb cut `length` from its tip, repaired at `samples` samples
+void expect_good_repair_of_cut(const Mesh& m, IRS::Limb_cut cut, double length, std::size_t samples)
+{
+  cut.length = length;
+  Mesh damaged, repaired;
+  const IRS::Part_repair_protocol_result r = IRS::run_part_repair_protocol(
+    m, {cut}, damaged, repaired, IRS::parameters::number_of_samples(samples));
+  expect_good_repair(r, 1);
+}
+
 std::vector<K::Point_3> points_of(const Mesh& m)
 {
   return std::vector<K::Point_3>(m.points().begin(), m.points().end());
@@ -198,29 +208,8 @@ TEST(Repair, LegCutAtSeveralHeights)
   for(double length : {0.5, 0.7, 0.9})
   {
     SCOPED_TRACE("leg cut " + std::to_string(length) + " from the foot");
-    IRS::Limb_cut cut = left_leg(m);
-    cut.length = length;
-    Mesh damaged, repaired;
-    const IRS::Part_repair_protocol_result r = IRS::run_part_repair_protocol(
-      m, {cut}, damaged, repaired, IRS::parameters::number_of_samples(stick_samples));
-    expect_good_repair(r, 1);
+    expect_good_repair_of_cut(m, left_leg(m), length, stick_samples);
   }
-}
-
-// Cut 0.9 from the foot, at 1000 samples, the leg's orphan region runs up
-// the inner thigh to the crotch: its base is no ring across the leg, and the
-// zone the copy replaces reached the part itself ("the mirrored part
-// overlaps the part it copies"). The repair is retried with the part cut to
-// the leg's end (repair_core()).
-TEST(Repair, LegCutHighAtMoreSamples)
-{
-  const Mesh m = IRS::generate_stick_figure<Mesh>(stick_vertices).mesh;
-  IRS::Limb_cut cut = left_leg(m);
-  cut.length = 0.9;
-  Mesh damaged, repaired;
-  const IRS::Part_repair_protocol_result r = IRS::run_part_repair_protocol(
-    m, {cut}, damaged, repaired, IRS::parameters::number_of_samples(1000));
-  expect_good_repair(r, 1);
 }
 
 // The same for the arm. Cut 0.9 from the hand, the damage tilts the mirror
@@ -233,13 +222,19 @@ TEST(Repair, ArmCutAtSeveralHeights)
   for(double length : {0.5, 0.9})
   {
     SCOPED_TRACE("arm cut " + std::to_string(length) + " from the hand");
-    IRS::Limb_cut cut = right_arm(m);
-    cut.length = length;
-    Mesh damaged, repaired;
-    const IRS::Part_repair_protocol_result r = IRS::run_part_repair_protocol(
-      m, {cut}, damaged, repaired, IRS::parameters::number_of_samples(stick_samples));
-    expect_good_repair(r, 1);
+    expect_good_repair_of_cut(m, right_arm(m), length, stick_samples);
   }
+}
+
+// Cut 0.9 from the foot, at 1000 samples, the leg's orphan region runs up
+// the inner thigh to the crotch: its base is no ring across the leg, and the
+// zone the copy replaces reached the part itself ("the mirrored part
+// overlaps the part it copies"). The repair is retried with the part cut to
+// the leg's end (repair_core()).
+TEST(Repair, LegCutHighAtMoreSamples)
+{
+  const Mesh m = IRS::generate_stick_figure<Mesh>(stick_vertices).mesh;
+  expect_good_repair_of_cut(m, left_leg(m), 0.9, 1000);
 }
 
 // Fig. 14 right: the symmetry is not exact. The right half is stretched by

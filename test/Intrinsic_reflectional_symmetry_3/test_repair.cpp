@@ -16,9 +16,11 @@
 //   (arm), and two limbs (arm and leg): enabled with the 2 % bound. (Two limbs
 //   passes since each part gets its own fit and the copy's inherited
 //   self-intersections are repaired locally.) The leg cut alone at 0.5, 0.7
-//   and 0.9 from the foot: enabled. At 1000 samples (repair_benchmark
-//   --cut-heights) the arm cut 1.2 from the hand gets nothing added and the
-//   leg cut 0.9 from the foot ends in a clear error; not tested here.
+//   and 0.9 from the foot, the arm at 0.5 and 0.9 from the hand (one part
+//   each), and the leg at 0.9 with 1000 samples (the retry with parts cut to
+//   their limb's end): enabled. At 1000 samples (repair_benchmark
+//   --cut-heights) the arm cut 1.2 from the hand gets nothing added; not
+//   tested here.
 // - FAUST (repair_benchmark, 1000 samples): the result is always closed and
 //   valid with no new self-intersection, or a clear Input_error. Within 2 %:
 //   forearm 8 of 19 shapes (000, 006, 010, 040, 050, 060, 070, 090), forearm

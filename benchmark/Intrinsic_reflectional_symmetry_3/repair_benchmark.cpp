@@ -4,8 +4,10 @@
 //
 // Symmetry-driven part repair (paper Sec. 4.2) by the package's protocol
 // (run_part_repair_protocol() in part_repair.h: cut limbs off with a plane,
-// cap, run the pipeline, repair, measure), on the generated stick figure and
-// on FAUST (DATA_DIR/faust_5k, skipped when absent): per shape, the complete
+// cap, run the pipeline, repair, measure), on the generated stick figure,
+// on CGAL's complete meshes (DATA_DIR/cgal_meshes, brought to about 5000
+// vertices; only the row "none") and on FAUST (DATA_DIR/faust_5k; each data
+// set skipped when absent): per shape, the complete
 // shape (row "none": nothing is missing, so "parts" must be 0), one limb
 // (the right forearm, cut 0.2 from the hand tip) and two limbs (that forearm
 // and the other side's lower leg, cut 0.3 from the foot tip). The limb tips
@@ -26,13 +28,16 @@
 // out of reach of the paper's method.
 //
 // usage: repair_benchmark [DATA_DIR] [--samples N] [--only NAME] [--write DIR] [--oracle-only] [--cut-heights]
+//                         [--no-complete]
 //   DATA_DIR default ../shared/data;  N samples (default 1000);
 //   NAME only the shapes whose name contains NAME;  DIR: damaged and repaired meshes written there;
 //   --oracle-only: FAUST oracle figures only (no repair);
 //   --cut-heights: also the stick figure's arm and leg, each cut alone at 0.4, 0.5, ..., 1.2 from
-//   its tip (rows "arm@0.4" ...): where a limb is cut must not matter
+//   its tip (rows "arm@0.4" ...): where a limb is cut must not matter;
+//   --no-complete: without the rows of CGAL's complete meshes (DATA_DIR/cgal_meshes)
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/part_repair.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/prepare_mesh.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -45,6 +50,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -66,7 +72,7 @@ struct Options
 {
   std::string data = "../shared/data", only, write;
   std::size_t samples = 1000;
-  bool oracle_only = false, cut_heights = false;
+  bool oracle_only = false, cut_heights = false, complete = true;
 };
 
 std::vector<long> read_vts(const fs::path& p)
@@ -219,6 +225,7 @@ int main(int argc, char** argv)
     else if(a == "--write" && i + 1 < argc) o.write = argv[++i];
     else if(a == "--oracle-only") o.oracle_only = true;
     else if(a == "--cut-heights") o.cut_heights = true;
+    else if(a == "--no-complete") o.complete = false;
     else o.data = a;
   }
   std::printf("part repair protocol, %zu samples per shape; distances in %% of the repaired bbox diagonal\n",
@@ -251,6 +258,35 @@ int main(int argc, char** argv)
       if(m.point(v).x() > 0.) m.point(v) = K::Point_3(1.03 * m.point(v).x(), m.point(v).y(), m.point(v).z());
     run(o, "stick-3%", "arm", m, {arm}); // imperfect symmetry: the right half 3 % longer
   }
+
+  // CGAL's complete meshes with a mirror symmetry (DATA_DIR/cgal_meshes), each
+  // brought to about 5000 vertices as `irsym --target-vertices 5000` does: on
+  // a complete shape nothing may be added (row "none", "parts" must be 0)
+  const fs::path cgal_dir = fs::path(o.data) / "cgal_meshes";
+  if(o.complete && !o.oracle_only && fs::exists(cgal_dir))
+  {
+    std::vector<fs::path> files;
+    for(const auto& f : fs::directory_iterator(cgal_dir))
+      if(f.path().extension() == ".off" && (o.only.empty() || f.path().stem().string().find(o.only) != std::string::npos))
+        files.push_back(f.path());
+    std::sort(files.begin(), files.end());
+    for(const fs::path& f : files)
+    {
+      Mesh input;
+      if(!CGAL::IO::read_polygon_mesh(f.string(), input)) continue;
+      try
+      {
+        const auto prepared = IRS::prepare_mesh(input, IRS::parameters::target_number_of_vertices(5000));
+        run(o, f.stem().string(), "none", prepared.working_mesh(), {});
+      }
+      catch(const std::exception& err)
+      {
+        std::printf("%-12s %-16s  (prepare) %s\n", f.stem().string().c_str(), "none", err.what());
+      }
+    }
+  }
+  else if(o.complete && !o.oracle_only)
+    std::printf("CGAL meshes: %s absent, skipped\n", cgal_dir.string().c_str());
 
   const fs::path dir = fs::path(o.data) / "faust_5k" / "faust";
   if(!fs::exists(dir / "tr_reg_000.off"))

@@ -29,6 +29,7 @@
 //
 // usage: segmentation_benchmark [DATA_DIR] [--only ID] [--samples N] [--write DIR] [--threads T]
 //                               [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A]
+//                               [--merge-uncovered]
 //   DATA_DIR  default ../shared/data (relative to the current directory); psb/ inside it
 //   ID        only this model id (may be repeated)
 //   N         samples per model (default 1000)
@@ -37,6 +38,8 @@
 //   T         worker threads (default 1: the benchmark machine is shared)
 //   C, R      maximum_number_of_curves and stopping_ratio of the curve extraction (package defaults otherwise)
 //   P         parts of the over-segmentation (default 20); A: minimum_segment_area (default 0.01)
+//   --merge-uncovered  merge_uncovered_parts(true) for ours, ours+axis and pure: faces no region
+//             covers join a neighbouring segment, so the number of segments is the number of curves
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
@@ -104,6 +107,7 @@ struct Options
   std::size_t samples = 1000, max_curves = 0, parts = IRS::default_number_of_over_segmentation_parts;
   double stopping_ratio = -1., minimum_area = IRS::default_minimum_segment_area;
   int threads = 1;
+  bool merge_uncovered = false;
 };
 
 // 1 - Rand index: the share of face pairs on which a and b disagree, from the contingency table
@@ -248,7 +252,7 @@ bool run_model(const Options& o, const std::string& id, const std::string& categ
   const double seconds_sdf_values = t_sdf.time();
   IRS::symmetric_regions(m, D, curves, fmap(region));
   r.parts = IRS::Sdf_over_segmenter(o.parts).from_sdf_values(m, get(CGAL::vertex_point, m), sdf, fmap(part));
-  const auto np = IRS::parameters::minimum_segment_area(o.minimum_area);
+  const auto np = IRS::parameters::minimum_segment_area(o.minimum_area).merge_uncovered_parts(o.merge_uncovered);
   r.segments[0] = IRS::merge_over_segmentation(m, fmap(region), fmap(part), fmap(ours), np);
   r.seconds_ours = t.time();
   r.segments[1] = IRS::symmetry_aware_segmentation(m, D, curves, fmap(ours_axis),
@@ -302,10 +306,11 @@ int main(int argc, char** argv)
     else if(a == "--stopping-ratio") o.stopping_ratio = std::atof(value().c_str());
     else if(a == "--parts") o.parts = std::size_t(std::max(1L, std::atol(value().c_str())));
     else if(a == "--min-area") o.minimum_area = std::atof(value().c_str());
+    else if(a == "--merge-uncovered") o.merge_uncovered = true;
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: segmentation_benchmark [DATA_DIR] [--only ID] [--samples N] [--write DIR] [--threads T]\n"
-                   "                              [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A]\n";
+                   "                              [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A] [--merge-uncovered]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }

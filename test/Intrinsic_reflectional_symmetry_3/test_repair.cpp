@@ -125,6 +125,18 @@ void expect_good_repair_of_cut(const Mesh& m, IRS::Limb_cut cut, double length, 
   expect_good_repair(r, 1);
 }
 
+// a complete shape through the protocol without cuts: nothing may be added
+void expect_nothing_added(const Mesh& m, std::size_t samples)
+{
+  Mesh damaged, repaired;
+  const IRS::Part_repair_protocol_result r =
+    IRS::run_part_repair_protocol(m, {}, damaged, repaired, IRS::parameters::number_of_samples(samples));
+  EXPECT_TRUE(r.error.empty()) << r.error;
+  EXPECT_EQ(r.report.number_of_parts, 0u);
+  EXPECT_EQ(num_vertices(repaired), num_vertices(m));
+  EXPECT_EQ(num_faces(repaired), num_faces(m));
+}
+
 std::vector<K::Point_3> points_of(const Mesh& m)
 {
   return std::vector<K::Point_3>(m.points().begin(), m.points().end());
@@ -292,13 +304,7 @@ TEST(Repair, NothingMissingGivesACopy)
 // "detect" two missing parts.
 TEST(Repair, NothingMissingAtMoreSamples)
 {
-  const Mesh m = IRS::generate_stick_figure<Mesh>(stick_vertices).mesh;
-  Mesh damaged, repaired;
-  const IRS::Part_repair_protocol_result r =
-    IRS::run_part_repair_protocol(m, {}, damaged, repaired, IRS::parameters::number_of_samples(1000));
-  EXPECT_TRUE(r.error.empty()) << r.error;
-  EXPECT_EQ(r.report.number_of_parts, 0u);
-  EXPECT_EQ(num_faces(repaired), num_faces(m));
+  expect_nothing_added(IRS::generate_stick_figure<Mesh>(stick_vertices).mesh, 1000);
 }
 
 TEST(Repair, BadInputThrows)
@@ -464,13 +470,7 @@ TEST(RepairFaustRegression, CompleteShapesGetNothingAdded)
     if(!read_faust_case(name, c)) GTEST_SKIP() << faust_dir() / (std::string(name) + ".off") << " absent";
     ASSERT_TRUE(c.ok) << "could not read " << name;
     SCOPED_TRACE(name);
-    Mesh damaged, repaired;
-    const IRS::Part_repair_protocol_result r = IRS::run_part_repair_protocol(
-      c.mesh, {}, damaged, repaired, IRS::parameters::number_of_samples(faust_samples));
-    EXPECT_TRUE(r.error.empty()) << r.error;
-    EXPECT_EQ(r.report.number_of_parts, 0u);
-    EXPECT_EQ(num_vertices(repaired), num_vertices(c.mesh));
-    EXPECT_EQ(num_faces(repaired), num_faces(c.mesh));
+    expect_nothing_added(c.mesh, faust_samples);
   }
 }
 
@@ -487,13 +487,7 @@ TEST(RepairCgalData, CompleteBearGetsNothingAdded)
   if(!fs::exists(file)) GTEST_SKIP() << file << " absent";
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(file.string(), input));
   const auto prepared = IRS::prepare_mesh(input, IRS::parameters::target_number_of_vertices(5000));
-  const Mesh& m = prepared.working_mesh();
-  Mesh damaged, repaired;
-  const IRS::Part_repair_protocol_result r =
-    IRS::run_part_repair_protocol(m, {}, damaged, repaired, IRS::parameters::number_of_samples(1000));
-  EXPECT_TRUE(r.error.empty()) << r.error;
-  EXPECT_EQ(r.report.number_of_parts, 0u);
-  EXPECT_EQ(num_faces(repaired), num_faces(m));
+  expect_nothing_added(prepared.working_mesh(), 1000);
 }
 
 // A regression guard, not the bar (five shapes with one limb and with

@@ -13,7 +13,11 @@
 // CR = share of checks with e <= sqrt(1 / (20 pi)), an unmapped x counting
 // as a failure. Also: share with e <= 0.25, mean e over mapped checks,
 // coverage, the distance from the ground-truth axis points to the top curve
-// (over sqrt(area)), and the time per shape (wall clock).
+// (over sqrt(area)), and the time per shape (wall clock). own% says what
+// kind of failure a shape has: of the off-axis checks that fail, the share
+// whose image lies nearer x itself than its mirror y (x kept on its own side,
+// the map degenerating to the identity there) rather than a misplaced mirror
+// image.
 //
 // usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--similarity EPS_SIM]
 //                               [--write DIR] [--threads T] [--no-scape] [--no-faust]
@@ -132,12 +136,17 @@ Pipeline_result run_pipeline(const Mesh& m, std::size_t number_of_samples, doubl
 struct Metrics
 {
   std::size_t checks = 0, covered = 0, correct = 0, within_025 = 0;
+  std::size_t failed = 0, failed_own_side = 0; // mapped but wrong; of those, image nearer x than its mirror
   double error_sum = 0.;
   double axis_mean = std::numeric_limits<double>::quiet_NaN(), axis_max = axis_mean;
   double cr() const { return checks ? 100. * double(correct) / double(checks) : 0.; }
   double coverage() const { return checks ? 100. * double(covered) / double(checks) : 0.; }
   double le025() const { return checks ? 100. * double(within_025) / double(checks) : 0.; }
   double mean_error() const { return covered ? error_sum / double(covered) : std::numeric_limits<double>::quiet_NaN(); }
+  double own_side() const
+  {
+    return failed ? 100. * double(failed_own_side) / double(failed) : std::numeric_limits<double>::quiet_NaN();
+  }
 };
 
 // pairs (x, y), vertex indices of `m`; axis points are pairs (x, x)
@@ -160,6 +169,13 @@ Metrics evaluate(const Mesh& m, const std::vector<std::pair<std::size_t, std::si
       out.error_sum += e;
       out.correct += (e <= kim_threshold);
       out.within_025 += (e <= 0.25);
+      if(e > kim_threshold && x != y)
+      {
+        // a failure that left x on its own side (x mapped near itself) rather than a misplaced mirror image
+        ++out.failed;
+        dijkstra.distances_from(x, d.data());
+        out.failed_own_side += (double(d[std::size_t(r.partner[x])]) / sqrt_area < e);
+      }
     }
   // axis: distance from each ground-truth axis point to the nearest vertex of the top curve
   if(!r.curves.empty())
@@ -217,7 +233,7 @@ void print_header()
             << std::setw(7) << "curves" << std::setw(9) << "cover%" << std::setw(8) << "CR%" << std::setw(8) << "e<=.25"
             << std::setw(9) << "mean e" << std::setw(10) << "axis mean" << std::setw(9) << "axis max"
             << std::setw(8) << "geod s" << std::setw(7) << "sig s" << std::setw(8) << "vote s" << std::setw(8)
-            << "curve s" << std::setw(7) << "map s" << std::setw(8) << "total s" << '\n';
+            << "curve s" << std::setw(7) << "map s" << std::setw(8) << "total s" << std::setw(8) << "own%" << '\n';
 }
 
 void print_row(const std::string& name, const Mesh& m, std::size_t samples, const Pipeline_result& r, const Metrics& e)
@@ -228,7 +244,7 @@ void print_row(const std::string& name, const Mesh& m, std::size_t samples, cons
             << std::setw(9) << e.mean_error() << std::setw(10) << e.axis_mean << std::setw(9) << e.axis_max
             << std::setprecision(2) << std::setw(8) << r.seconds[0] << std::setw(7) << r.seconds[1] << std::setw(8)
             << r.seconds[2] << std::setw(8) << r.seconds[3] << std::setw(7) << r.seconds[4] << std::setw(8)
-            << r.seconds[5] << std::endl;
+            << r.seconds[5] << std::setprecision(1) << std::setw(8) << e.own_side() << std::endl;
 }
 
 struct Summary

@@ -273,7 +273,11 @@ int main(int argc, char** argv)
     for(const fs::path& f : files)
     {
       Mesh input;
-      if(!CGAL::IO::read_polygon_mesh(f.string(), input)) continue;
+      if(!CGAL::IO::read_polygon_mesh(f.string(), input))
+      {
+        std::printf("%-12s %-16s  (read) could not read %s\n", f.stem().string().c_str(), "none", f.string().c_str());
+        continue;
+      }
       try
       {
         const auto prepared = IRS::prepare_mesh(input, IRS::parameters::target_number_of_vertices(5000));

@@ -812,8 +812,9 @@ inline Repair_core_result repair_core_once(const Repair_soup& s, const std::vect
   const std::size_t np = part_faces.size();
   if(np == 0) return build(std::vector<std::size_t>());
   std::vector<std::size_t> chosen(np, 0);
+  std::vector<char> rejected(np, 0);
   bool each = true;
-  for(std::size_t k = 0; k < np && each; ++k)
+  for(std::size_t k = 0; k < np; ++k)
   {
     bool ok = false;
     double best = std::numeric_limits<double>::infinity();
@@ -833,15 +834,19 @@ inline Repair_core_result repair_core_once(const Repair_soup& s, const std::vect
       }
     }
     // A missing limb leaves its surroundings intact, so the reflected collar
-    // fits the other side closely: ICP residual 0.002-0.094 tau on the stick
-    // figure and FAUST (forearm and leg cuts). Where even the best fit is
-    // worse than `maximum_collar_rms` tau, the other side is no mirror image
-    // of the part's surroundings and the part is not copied: on CGAL's
-    // complete bear.off a patch at the base of an ear, where the map fails,
-    // was (0.171 tau).
-    if(ok && !(best <= rs.maximum_collar_rms * tau)) chosen[k] = skip;
-    each = ok;
+    // fits the other side closely (part_repair.h: 0.002-0.094 tau); a part
+    // whose best fit is worse than `maximum_collar_rms` tau is a failure of
+    // the map (CGAL's bear.off: 0.171 tau) and is not copied, whatever fits
+    // the other parts get below.
+    if(ok && !(best <= rs.maximum_collar_rms * tau)) { rejected[k] = 1; chosen[k] = skip; }
+    each = each && ok;
   }
+  auto same_fit = [&](std::size_t a) {
+    std::vector<std::size_t> attempt(np, a);
+    for(std::size_t k = 0; k < np; ++k)
+      if(rejected[k]) attempt[k] = skip;
+    return attempt;
+  };
   if(each)
   {
     try
@@ -857,13 +862,13 @@ inline Repair_core_result repair_core_once(const Repair_soup& s, const std::vect
   {
     try
     {
-      return build(std::vector<std::size_t>(np, attempt));
+      return build(same_fit(attempt));
     }
     catch(const Input_error&)
     {
     }
   }
-  return build(std::vector<std::size_t>(np, number_of_fits - 1)); // if this fails too, its error is the one reported
+  return build(same_fit(number_of_fits - 1)); // if this fails too, its error is the one reported
 }
 
 /// the whole repair on a closed soup; `partner[v]` = mirror vertex or -1;

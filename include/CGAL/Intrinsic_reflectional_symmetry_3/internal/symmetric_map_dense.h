@@ -176,7 +176,13 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
   // each with landmarks taken from the mutual sample pairs of the previous
   // round's map: the landmarks of the global match carry its distortion on
   // posed shapes. sigma: three times the spacing of the 2K landmark samples
-  // were they spread evenly over the region.
+  // were they spread evenly over the region. A sample mapped to itself gives
+  // a landmark pair (s, s), right on the axis and wrong elsewhere (it makes
+  // the vertices near it prefer themselves: FAUST tr_reg_002's head). All
+  // are kept: dropping those the global match does not map to themselves,
+  // or those around which the map keeps the orientation, mends tr_reg_002
+  // (96.4 -> 98.1 / 98.2 % CR) but costs tr_reg_008 (97.2 -> 96.4 / 96.7 %)
+  // and, the first rule, SCAPE (63.3 -> 61.7 %) (symmetry_map_benchmark).
   double region_area = 0.;
   for(const auto& f : m.faces)
     if(in_region[f[0]] && in_region[f[1]] && in_region[f[2]]) region_area += triangle_area(m, f);

@@ -294,7 +294,9 @@ private:
     // The bounds, read from the rows of D. (A copy of D in block order would
     // make the reads of a block contiguous, but its allocation and copy cost
     // more than they save: page faults on n x V floats, then reads of a few
-    // blocks per pair.) Each row is read in vertex order (sequentially: the
+    // blocks per pair. Even with 5,124 voting pairs, camel at 300 samples,
+    // eps_SIM 0.2, the boundary stage took 0.19 s with the copy as without
+    // it, and the copy 10-40 ms.) Each row is read in vertex order (sequentially: the
     // block order scatters the reads over the row), each vertex raising the
     // bound of its block. A term |d(x,v) - d(x,c)| is computed without
     // branches: infinite where exactly one of the two is finite or either is

@@ -812,8 +812,7 @@ inline Repair_core_result repair_core_once(const Repair_soup& s, const std::vect
   // the others.
   const std::size_t np = part_faces.size();
   if(np == 0) return build(std::vector<std::size_t>());
-  std::vector<std::size_t> chosen(np, 0);
-  std::vector<char> rejected(np, 0);
+  std::vector<std::size_t> chosen(np, 0); // skip: rejected for its collar fit
   bool each = true;
   for(std::size_t k = 0; k < np; ++k)
   {
@@ -839,13 +838,13 @@ inline Repair_core_result repair_core_once(const Repair_soup& s, const std::vect
     // whose best fit is worse than `maximum_collar_rms` tau is a failure of
     // the map (CGAL's bear.off: 0.171 tau) and is not copied, whatever fits
     // the other parts get below.
-    if(ok && !(best <= rs.maximum_collar_rms * tau)) { rejected[k] = 1; chosen[k] = skip; }
+    if(ok && !(best <= rs.maximum_collar_rms * tau)) chosen[k] = skip;
     each = each && ok;
   }
   auto same_fit = [&](std::size_t a) {
     std::vector<std::size_t> attempt(np, a);
     for(std::size_t k = 0; k < np; ++k)
-      if(rejected[k]) attempt[k] = skip;
+      if(chosen[k] == skip) attempt[k] = skip;
     return attempt;
   };
   if(each)

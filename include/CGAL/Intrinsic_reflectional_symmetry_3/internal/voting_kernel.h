@@ -296,12 +296,13 @@ private:
     // more than they save: page faults on n x V floats, then reads of a few
     // blocks per pair. Even with 5,124 voting pairs, camel at 300 samples,
     // eps_SIM 0.2, the boundary stage took 0.19 s with the copy as without
-    // it, and the copy 10-40 ms.) Each row is read in vertex order (sequentially: the
-    // block order scatters the reads over the row), each vertex raising the
-    // bound of its block. A term |d(x,v) - d(x,c)| is computed without
-    // branches: infinite where exactly one of the two is finite or either is
-    // NaN, 0 where both are infinite (another component), so c's own term is
-    // 0 unless d(x,c) is NaN. (The maximum does not depend on the order.)
+    // it, and the copy 10-40 ms.) Each row is read in vertex order
+    // (sequentially: the block order scatters the reads over the row), each
+    // vertex raising the bound of its block. A term |d(x,v) - d(x,c)| is
+    // computed without branches: infinite where exactly one of the two is
+    // finite or either is NaN, 0 where both are infinite (another component),
+    // so c's own term is 0 unless d(x,c) is NaN. (The maximum does not depend
+    // on the order.)
     const std::size_t n = number_of_samples_;
     const float inf = std::numeric_limits<float>::infinity();
     block_info_.resize(2 * n * nblocks);

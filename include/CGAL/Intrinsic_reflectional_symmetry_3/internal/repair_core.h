@@ -607,6 +607,18 @@ inline Repair_core_result repair_core_once(const Repair_soup& s, const std::vect
     // figure: 0.39 % instead of 2.59 %). Then, if no copy placed so can be
     // attached, the band from the base to 3 tau: on posed limbs (FAUST) the
     // far band fits the upper limb and leaves the copy off the stump.
+    // Not wider bands: on posed limbs a band's fit turns with its width
+    // (FAUST, repair_benchmark, shapes within 2 % with one limb / two limbs
+    // / both: 8 / 5 / 4 with these fits; 10 / 5 / 5, 10 / 7 / 7, 9 / 5 / 5
+    // and 8 / 4 / 4 with the band from the base to 5, 6, 7 or 8 tau tried
+    // first; 9 / 7 / 6 with the mean placement of the 5, 6 and 7 tau fits),
+    // but the mean takes the stick figure with imperfect symmetry
+    // (test_repair) from within 2 % to 2.57 % (2.30 % with the far band's
+    // fit in the mean). Nor the medoid of the fits: 4 / 3 / - on FAUST. The
+    // residuals do not tell which fit is the most accurate (the far band's is
+    // the smallest on nearly every FAUST part), nor does the disagreement
+    // between the mean and the chosen fit (0.27-0.66 tau where the mean
+    // helps on FAUST, 0.55 tau on that stick figure).
     if(fits.empty())
     {
       const std::vector<double> dO = soup_dijkstra(s, nb, base);

@@ -614,7 +614,7 @@ inline Repair_core_result repair_core_once(const Repair_soup& s, const std::vect
     // first; 9 / 7 / 6 with the mean placement of the 5, 6 and 7 tau fits),
     // but the mean takes the stick figure with imperfect symmetry
     // (test_repair) from within 2 % to 2.57 % (2.30 % with the far band's
-    // fit in the mean). Nor the medoid of the fits: 4 / 3 / - on FAUST. The
+    // fit in the mean). Nor the medoid of the fits: 4 / 3 / 1 on FAUST. The
     // residuals do not tell which fit is the most accurate (the far band's is
     // the smallest on nearly every FAUST part), nor does the disagreement
     // between the mean and the chosen fit (0.27-0.66 tau where the mean

@@ -4,7 +4,7 @@
 #   bash scripts/install_packages.sh
 set -euo pipefail
 
-packages=(g++ make cmake libcgal-dev libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev
+packages=(g++ make cmake libcgal-dev libeigen3-dev libspectra-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev
           libgtest-dev libcgal-demo f3d xvfb xauth
           python3-numpy python3-scipy # the shared evaluation tools (benchmarks only)
           python3-pil) # side-by-side figures (scripts/make_figures.sh)

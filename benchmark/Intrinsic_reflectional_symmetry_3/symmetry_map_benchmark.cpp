@@ -13,7 +13,9 @@
 // CR = share of checks with e <= sqrt(1 / (20 pi)), an unmapped x counting
 // as a failure. Also: share with e <= 0.25, mean e over mapped checks,
 // coverage, the distance from the ground-truth axis points to the top curve
-// (over sqrt(area)), and the time per shape (wall clock). own% says what
+// (over sqrt(area)), and the time per shape (wall clock). CR0% is the CR of
+// the map without its spectral refinement (number_of_eigenfunctions(0)),
+// computed in the same run from the same curves (not timed). own% says what
 // kind of failure a shape has: of the off-axis checks that fail, the share
 // whose image lies nearer x itself than its mirror y (x kept on its own side,
 // the map degenerating to the identity there) rather than a misplaced mirror
@@ -88,6 +90,7 @@ struct Pipeline_result
 {
   std::vector<IRS::Irsa_curve> curves;
   std::vector<std::ptrdiff_t> partner; // by vertex index
+  std::vector<std::ptrdiff_t> partner_without_spectral; // number_of_eigenfunctions(0)
   std::size_t similar_pairs = 0, voting_pairs = 0, region_faces = 0;
   double seconds[6] = {0., 0., 0., 0., 0., 0.}; // geodesics, signatures, voting, curves, map, total
 };
@@ -130,6 +133,10 @@ Pipeline_result run_pipeline(const Mesh& m, std::size_t number_of_samples, doubl
   for(Vertex v : vertices(m)) r.partner[v.idx()] = get(partner, v);
   r.seconds[4] = t.time();
   r.seconds[5] = total.time();
+
+  IRS::symmetric_vertex_map(m, D, r.curves, partner, IRS::parameters::number_of_eigenfunctions(0));
+  r.partner_without_spectral.assign(num_vertices(m), -1);
+  for(Vertex v : vertices(m)) r.partner_without_spectral[v.idx()] = get(partner, v);
   return r;
 }
 
@@ -138,8 +145,10 @@ struct Metrics
   std::size_t checks = 0, covered = 0, correct = 0, within_025 = 0;
   std::size_t failed = 0, failed_own_side = 0; // mapped but wrong; of those, image nearer x than its mirror
   double error_sum = 0.;
+  std::size_t correct_without_spectral = 0;
   double axis_mean = std::numeric_limits<double>::quiet_NaN(), axis_max = axis_mean;
   double cr() const { return checks ? 100. * double(correct) / double(checks) : 0.; }
+  double cr_without_spectral() const { return checks ? 100. * double(correct_without_spectral) / double(checks) : 0.; }
   double coverage() const { return checks ? 100. * double(covered) / double(checks) : 0.; }
   double le025() const { return checks ? 100. * double(within_025) / double(checks) : 0.; }
   double mean_error() const { return covered ? error_sum / double(covered) : std::numeric_limits<double>::quiet_NaN(); }
@@ -162,6 +171,11 @@ Metrics evaluate(const Mesh& m, const std::vector<std::pair<std::size_t, std::si
     {
       const std::size_t x = way ? xy.second : xy.first, y = way ? xy.first : xy.second;
       ++out.checks;
+      if(r.partner_without_spectral[x] >= 0)
+      {
+        dijkstra.distances_from(std::size_t(r.partner_without_spectral[x]), d.data());
+        out.correct_without_spectral += (double(d[y]) / sqrt_area <= kim_threshold);
+      }
       if(r.partner[x] < 0) continue;
       ++out.covered;
       // one search from the image gives its distance to y (the error) and to x
@@ -230,7 +244,7 @@ void write_outputs(const Options& o, const std::string& name, const Pipeline_res
 void print_header()
 {
   std::cout << std::left << std::setw(12) << "shape" << std::right << std::setw(7) << "V" << std::setw(8) << "samples"
-            << std::setw(7) << "curves" << std::setw(9) << "cover%" << std::setw(8) << "CR%" << std::setw(8) << "e<=.25"
+            << std::setw(7) << "curves" << std::setw(9) << "cover%" << std::setw(8) << "CR%" << std::setw(8) << "CR0%" << std::setw(8) << "e<=.25"
             << std::setw(9) << "mean e" << std::setw(10) << "axis mean" << std::setw(9) << "axis max"
             << std::setw(8) << "geod s" << std::setw(7) << "sig s" << std::setw(8) << "vote s" << std::setw(8)
             << "curve s" << std::setw(7) << "map s" << std::setw(8) << "total s" << std::setw(8) << "own%" << '\n';
@@ -240,7 +254,7 @@ void print_row(const std::string& name, const Mesh& m, std::size_t samples, cons
 {
   std::cout << std::left << std::setw(12) << name << std::right << std::setw(7) << num_vertices(m) << std::setw(8)
             << samples << std::setw(7) << r.curves.size() << std::fixed << std::setprecision(2) << std::setw(9)
-            << e.coverage() << std::setw(8) << e.cr() << std::setw(8) << e.le025() << std::setprecision(4)
+            << e.coverage() << std::setw(8) << e.cr() << std::setw(8) << e.cr_without_spectral() << std::setw(8) << e.le025() << std::setprecision(4)
             << std::setw(9) << e.mean_error() << std::setw(10) << e.axis_mean << std::setw(9) << e.axis_max
             << std::setprecision(2) << std::setw(8) << r.seconds[0] << std::setw(7) << r.seconds[1] << std::setw(8)
             << r.seconds[2] << std::setw(8) << r.seconds[3] << std::setw(7) << r.seconds[4] << std::setw(8)
@@ -249,10 +263,10 @@ void print_row(const std::string& name, const Mesh& m, std::size_t samples, cons
 
 struct Summary
 {
-  std::vector<double> cr, le025, err, cover, axis, time;
+  std::vector<double> cr, cr0, le025, err, cover, axis, time;
   void add(const Metrics& e, const Pipeline_result& r)
   {
-    cr.push_back(e.cr()); le025.push_back(e.le025()); err.push_back(e.mean_error());
+    cr.push_back(e.cr()); cr0.push_back(e.cr_without_spectral()); le025.push_back(e.le025()); err.push_back(e.mean_error());
     cover.push_back(e.coverage()); axis.push_back(e.axis_mean); time.push_back(r.seconds[5]);
   }
   static double mean(const std::vector<double>& v)
@@ -267,7 +281,9 @@ struct Summary
     if(cr.empty()) return;
     std::cout << std::left << std::setw(34) << what << std::right << std::fixed << " n=" << std::setw(2) << cr.size()
               << std::setprecision(2) << "  CR " << std::setw(6) << mean(cr) << " %  (min " << std::setw(6)
-              << *std::min_element(cr.begin(), cr.end()) << ")  e<=0.25 " << std::setw(6) << mean(le025)
+              << *std::min_element(cr.begin(), cr.end()) << "; without the spectral refinement " << std::setw(6)
+              << mean(cr0) << " %, min " << std::setw(6) << *std::min_element(cr0.begin(), cr0.end())
+              << ")  e<=0.25 " << std::setw(6) << mean(le025)
               << " %  coverage " << std::setw(6) << mean(cover) << " %  mean e " << std::setprecision(4)
               << mean(err) << "  axis mean " << mean(axis) << std::setprecision(2) << "  time " << mean(time)
               << " s/shape" << std::endl;

@@ -240,12 +240,12 @@ Part_repair_report repair_missing_parts(const TriangleMesh& tm, const Geodesic_d
     if(index == 4) break;
     std::vector<Irsa_curve> one(1, c);
     auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), tm);
-    // The global match only (no local refinement): the detection reads where
-    // the map collapses a limb onto the cap of its cut mirror, which the
-    // locally weighted landmarks partly hide (measured: the 3 %-stretched
+    // The global match only (no local or spectral refinement): the detection
+    // reads where the map collapses a limb onto the cap of its cut mirror,
+    // which the locally weighted landmarks partly hide (measured: the 3 %-stretched
     // stick figure's arm 2.4 % instead of 1.5 %; FAUST one limb within 2 %
     // on 6 instead of 7 of 19 shapes).
-    internal::symmetric_vertex_map<ConcurrencyTag>(tm, D, one, partner, np, 0);
+    internal::symmetric_vertex_map<ConcurrencyTag>(tm, D, one, partner, np, true);
     try
     {
       Part_repair_report r = repair_missing_parts(tm, c, partner, out, np);

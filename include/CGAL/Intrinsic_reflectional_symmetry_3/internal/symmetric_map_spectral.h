@@ -228,7 +228,8 @@ void zoomout(const Region_spectrum& s, std::size_t k0, std::size_t k1, std::size
 /// Refines the mirror partners `best` (vertex indices; `best[i]` for
 /// `verts[i]`, the vertices of a region) by ZoomOut with up to
 /// `number_of_eigenfunctions` functions (from 30, 5 at a time), iterating on
-/// the samples of D in the region. The vertices of the region on no face of it
+/// the samples of D in the region (`sample_vertices`, in farthest-point
+/// order; the first 1000 of them). The vertices of the region on no face of it
 /// keep their partner; so does every vertex when the region has too few
 /// vertices (fewer than 4 per function, or fewer than 10 functions) or
 /// the eigensolver does not converge. Returns true if the map was refined.
@@ -251,9 +252,13 @@ bool spectral_refinement(const Curves_mesh& m, const std::vector<std::size_t>& s
     const std::size_t b = best[slot[spec.rows[r]]];
     image[r] = (b != none && row_of[b] != none) ? row_of[b] : r;
   }
+  // the first samples in farthest-point order are spread evenly; 1000 of
+  // them fix C as well as 3000 do (FAUST: the same rates) at a third of the
+  // cost of the nearest-row searches
+  const std::size_t max_subset = 1000;
   std::vector<std::size_t> subset;
   for(std::size_t v : sample_vertices)
-    if(row_of[v] != none) subset.push_back(row_of[v]);
+    if(row_of[v] != none && subset.size() < max_subset) subset.push_back(row_of[v]);
   std::sort(subset.begin(), subset.end());
   subset.erase(std::unique(subset.begin(), subset.end()), subset.end());
   zoomout<ConcurrencyTag>(spec, 30, k, 5, subset, image);

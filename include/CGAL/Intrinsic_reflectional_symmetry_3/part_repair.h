@@ -143,7 +143,11 @@ void copy_result(const Repair_core_result& r, OutputMesh& out, Part_repair_repor
 /// cut) onto the other side's surface, caps excluded; if no copy so placed
 /// can be attached, with the band from the base to 3 tau (posed limbs).
 /// Each part gets its own fit: of the four (two bands, two starts) with which
-/// it can be attached alone, the one with the smallest ICP residual. A part
+/// it can be attached alone, the one with the smallest ICP residual. A
+/// slender part (longer than 5 times its base radius: a forearm, a lower
+/// leg) first gets a wider collar, from the base to 7 tau, whose fit is kept
+/// if it can be attached: a turn of the copy moves its tip by the turn times
+/// the part's length, and the wider collar holds the turn. A part
 /// whose best residual exceeds tau / 8 is not copied: a missing limb leaves
 /// its surroundings intact, so their reflection fits the other side closely
 /// (0.002-0.094 tau on the stick figure and FAUST), and where it does not, the

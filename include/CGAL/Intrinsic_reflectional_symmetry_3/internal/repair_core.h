@@ -529,7 +529,7 @@ inline Repair_core_result repair_core_once(const Repair_soup& s, const std::vect
   const Repair_core_result detected = result;
   // the fits of each part do not depend on the attempt: computed once
   // two bands, two starts each; a slender part: three bands, the wide one first
-  const std::size_t number_of_fits = 6;
+  const std::size_t number_of_fits = 6, wide_fits = 2;
   std::vector<char> slender(part_faces.size(), 0); // set with the part's fits
   std::vector<std::vector<std::pair<double, Eigen::Matrix4d> > > part_fits(part_faces.size());
   const std::size_t skip = std::size_t(-1); // attempt[k] == skip: part k is not placed
@@ -870,10 +870,10 @@ inline Repair_core_result repair_core_once(const Repair_soup& s, const std::vect
       {
         build(one); // the result is not kept: the choice needs every fit tried
         const double r = part_fits[k][a].first;
-        // a slender part keeps its wide collar's fit (0 or 1) once attached
-        const bool keep = slender[k] && ok && chosen[k] < 2;
+        // a slender part keeps its wide collar's fit once attached
+        const bool keep = slender[k] && ok && chosen[k] < wide_fits;
         if(!ok || (r < best && !keep)) chosen[k] = a;
-        best = ok ? (std::min)(best, r) : r;
+        best = (std::min)(best, r);
         ok = true;
       }
       catch(const Input_error&) // this fit cannot be attached
@@ -904,8 +904,11 @@ inline Repair_core_result repair_core_once(const Repair_soup& s, const std::vect
     {
     }
   }
-  // else the same fit for all the parts, in turn
-  for(std::size_t attempt = 0; attempt + 1 < number_of_fits; ++attempt)
+  // else the same fit for all the parts, in turn, up to the most fits a part
+  // has (beyond its own, a part keeps its last fit: no attempt repeated)
+  std::size_t attempts = 1;
+  for(const auto& fits : part_fits) attempts = (std::max)(attempts, fits.size());
+  for(std::size_t attempt = 0; attempt + 1 < attempts; ++attempt)
   {
     try
     {
@@ -915,7 +918,7 @@ inline Repair_core_result repair_core_once(const Repair_soup& s, const std::vect
     {
     }
   }
-  return build(same_fit(number_of_fits - 1)); // if this fails too, its error is the one reported
+  return build(same_fit(attempts - 1)); // if this fails too, its error is the one reported
 }
 
 /// the whole repair on a closed soup; `partner[v]` = mirror vertex or -1;

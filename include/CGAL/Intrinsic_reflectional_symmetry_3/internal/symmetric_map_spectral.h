@@ -103,6 +103,9 @@ inline bool region_spectrum(const Curves_mesh& m, const std::vector<unsigned cha
     {
       mass[Eigen::Index(row[f[c]])] += a / 3.;
       // the cotangent of the angle at corner c weighs the opposite edge
+      // (by hand: CGAL's per-corner cotangent is not documented, and its
+      // cotangent Laplacians, in Heat_method_3 and PMP, are internal and
+      // take a whole FaceGraph, not a region of these arrays)
       const auto& o = m.points[f[c]];
       const auto& p = m.points[f[(c + 1) % 3]];
       const auto& q = m.points[f[(c + 2) % 3]];

@@ -68,6 +68,9 @@ usage: irsym MESH --out DIR [options]
   --target-vertices N  first remesh or decimate to about N vertices (default: keep the mesh)
   --remesh             reach --target-vertices by isotropic remeshing (default: decimation
                        when reducing, remeshing when refining)
+  --nested-symmetries  also extract the axes of smaller parts (limbs) below the paper's
+                       selection (extract_irsa_curves' nested_symmetries): more curves,
+                       regions and segments
   --repair             also rebuild a missing part from its mirror part (part repair) on
                        the mesh the pipeline ran on; not possible is reported, not an error
   --up AXIS            the mesh axis drawn upwards in the pictures: +X, -X, +Y, -Y, +Z
@@ -106,7 +109,7 @@ struct Options
   unsigned seed = 0;
   int threads = 0;
   long long target_vertices = 0;
-  bool remesh = false, repair = false;
+  bool remesh = false, repair = false, nested = false;
   std::string up = "+Z";
 };
 
@@ -142,6 +145,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--target-vertices") o.target_vertices = parse_integer(a, value(), 4);
     else if(a == "--remesh") o.remesh = true;
     else if(a == "--repair") o.repair = true;
+    else if(a == "--nested-symmetries") o.nested = true;
     else if(a == "--up") {
       o.up = value();
       if(o.up.size() != 2 || (o.up[0] != '+' && o.up[0] != '-') || o.up.find_first_of("XYZ", 1) != 1)
@@ -391,7 +395,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   std::vector<IRS::Irsa_curve> curves;
   IRS::extract_irsa_curves(work, D, voting,
                            boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
-                           std::back_inserter(curves));
+                           std::back_inserter(curves), IRS::parameters::nested_symmetries(opt.nested));
   log.stop();
 
   log.start("symmetric regions and map");
@@ -522,7 +526,7 @@ int main(int argc, char** argv)
           .add("samples", opt.samples ? double(*opt.samples) : std::numeric_limits<double>::quiet_NaN())
           .add("seed", opt.seed).add("geodesics", opt.geodesics).add("threads", threads)
           .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh).add("up", opt.up)
-          .add("repair", opt.repair);
+          .add("repair", opt.repair).add("nested_symmetries", opt.nested);
     report.add("parameters", params);
 
     int rc = 0;

@@ -29,7 +29,7 @@
 //
 // usage: segmentation_benchmark [DATA_DIR] [--only ID] [--samples N] [--write DIR] [--threads T]
 //                               [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A]
-//                               [--merge-uncovered]
+//                               [--merge-uncovered] [--nested]
 //   DATA_DIR  default ../shared/data (relative to the current directory); psb/ inside it
 //   ID        only this model id (may be repeated)
 //   N         samples per model (default 1000)
@@ -38,6 +38,7 @@
 //   T         worker threads (default 1: the benchmark machine is shared)
 //   C, R      maximum_number_of_curves and stopping_ratio of the curve extraction (package defaults otherwise)
 //   P         parts of the over-segmentation (default 20); A: minimum_segment_area (default 0.01)
+//   --nested  nested_symmetries(true) in the curve extraction
 //   --merge-uncovered  merge_uncovered_parts(true) for ours, ours+axis and pure: faces no region
 //             covers join a neighbouring segment, so the number of segments is the number of curves
 
@@ -108,6 +109,7 @@ struct Options
   double stopping_ratio = -1., minimum_area = IRS::default_minimum_segment_area;
   int threads = 1;
   bool merge_uncovered = false;
+  bool nested = false;
 };
 
 // 1 - Rand index: the share of face pairs on which a and b disagree, from the contingency table
@@ -224,17 +226,11 @@ bool run_model(const Options& o, const std::string& id, const std::string& categ
   auto tau = get(CGAL::dynamic_vertex_property_t<double>(), m);
   const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(m, D, similar, tau);
   std::vector<IRS::Irsa_curve> curves;
-  if(o.max_curves > 0 && o.stopping_ratio >= 0.)
-    IRS::extract_irsa_curves(m, D, voting, tau, std::back_inserter(curves),
-                             IRS::parameters::maximum_number_of_curves(o.max_curves).stopping_ratio(o.stopping_ratio));
-  else if(o.max_curves > 0)
-    IRS::extract_irsa_curves(m, D, voting, tau, std::back_inserter(curves),
-                             IRS::parameters::maximum_number_of_curves(o.max_curves));
-  else if(o.stopping_ratio >= 0.)
-    IRS::extract_irsa_curves(m, D, voting, tau, std::back_inserter(curves),
-                             IRS::parameters::stopping_ratio(o.stopping_ratio));
-  else
-    IRS::extract_irsa_curves(m, D, voting, tau, std::back_inserter(curves));
+  const std::size_t max_curves = o.max_curves > 0 ? o.max_curves : IRS::internal::default_maximum_number_of_curves;
+  const double ratio = o.stopping_ratio >= 0. ? o.stopping_ratio : IRS::internal::default_stopping_ratio;
+  IRS::extract_irsa_curves(m, D, voting, tau, std::back_inserter(curves),
+                           IRS::parameters::maximum_number_of_curves(max_curves).stopping_ratio(ratio)
+                             .nested_symmetries(o.nested));
   r.curves = curves.size();
   r.seconds_pipeline = t.time();
   t.reset();
@@ -307,10 +303,11 @@ int main(int argc, char** argv)
     else if(a == "--parts") o.parts = std::size_t(std::max(1L, std::atol(value().c_str())));
     else if(a == "--min-area") o.minimum_area = std::atof(value().c_str());
     else if(a == "--merge-uncovered") o.merge_uncovered = true;
+    else if(a == "--nested") o.nested = true;
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: segmentation_benchmark [DATA_DIR] [--only ID] [--samples N] [--write DIR] [--threads T]\n"
-                   "                              [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A] [--merge-uncovered]\n";
+                   "                              [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A] [--merge-uncovered] [--nested]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }

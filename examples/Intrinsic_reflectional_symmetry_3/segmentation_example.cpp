@@ -72,7 +72,7 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  // 1. the pipeline with the package's defaults, up to the IRSA curves
+  // 1. the pipeline with the package's defaults, up to the IRSA curves (and the nested ones)
   const std::vector<std::size_t> samples = IRS::farthest_point_samples(mesh, IRS::parameters::random_seed(0u));
   const IRS::Heat_method_geodesic_oracle<Mesh> oracle(mesh);
   const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
@@ -81,7 +81,9 @@ int main(int argc, char** argv)
   auto tau = mesh.add_property_map<vertex_descriptor, double>("v:tau", 0.).first;
   const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(mesh, D, similar, tau);
   std::vector<IRS::Irsa_curve> curves;
-  IRS::extract_irsa_curves(mesh, D, voting, tau, std::back_inserter(curves));
+  // nested symmetries: the axes of the limbs too, not only the body's (one segment per curve)
+  IRS::extract_irsa_curves(mesh, D, voting, tau, std::back_inserter(curves),
+                           IRS::parameters::nested_symmetries(true));
   std::cout << num_vertices(mesh) << " vertices, " << samples.size() << " samples, " << curves.size()
             << " IRSA curve(s)" << std::endl;
 

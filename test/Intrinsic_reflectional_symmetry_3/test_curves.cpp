@@ -422,7 +422,7 @@ TEST(Curves, NestedSymmetriesAreKeptOtherSymmetriesOfAPartRemoved)
   std::vector<IRS::internal::Working_curve> curves = {curve(2, low), curve(0, low), curve(2, low), curve(1, top)};
   for(std::size_t c = 0; c < curves.size(); ++c) curves[c].pair = c;
   std::vector<std::vector<unsigned char>> masks = {all, all, all, top_end};
-  const std::vector<std::vector<std::size_t>> partners = {mirror(2), mirror(0), mirror(2), mirror(1)};
+  std::vector<std::vector<std::size_t>> partners = {mirror(2), mirror(0), mirror(2), mirror(1)};
   ASSERT_FALSE(curves[3].polylines[0].vertices.empty());
   const IRS::internal::Working_curve top_curve = curves[3];
   IRS::internal::remove_dominated_curves(m, 0.5, 3. * e, curves, masks, partners);
@@ -430,6 +430,7 @@ TEST(Curves, NestedSymmetriesAreKeptOtherSymmetriesOfAPartRemoved)
   for(const auto& c : curves) kept.push_back(c.pair);
   EXPECT_EQ(kept, (std::vector<std::size_t>{0, 3}));
   EXPECT_EQ(masks.size(), curves.size());
+  EXPECT_EQ(partners.size(), curves.size());
 
   // fixed points count only near the curve
   const std::vector<std::size_t> none(nv, MM::none);
@@ -447,6 +448,58 @@ TEST(Curves, NestedSymmetriesAreKeptOtherSymmetriesOfAPartRemoved)
   EXPECT_GT(band_size, top_curve.flat_vertices().size());
   EXPECT_LT(band_size, nv / 5);
   EXPECT_GT(band_min_z, top - 3. * e - 1e-9);
+}
+
+TEST(Curves, NestedSymmetriesFindTheLimbsOfTheStickFigure)
+{
+  // The paper's selection keeps the body's axis only (a leg's nu is tiny next
+  // to it); nested_symmetries goes on below it. Expected: the paper's curves
+  // unchanged, and at least one nested curve whose region is a limb's (mostly
+  // on the limbs, and covering a good share of one leg or arm).
+  const auto shape = IRS::generate_stick_figure<Mesh>(3000);
+  const std::vector<Point> pts = vertex_points(shape.mesh);
+  // limbs: 0, 1 the arms (x < 0, x > 0), 2, 3 the legs; -1 the body
+  auto limb = [&](std::size_t v) {
+    if(std::abs(pts[v].x()) > 0.6) return pts[v].x() < 0. ? 0 : 1;
+    if(pts[v].z() < -1.2) return pts[v].x() < 0. ? 2 : 3;
+    return -1;
+  };
+  std::size_t limb_size[4] = {0, 0, 0, 0};
+  for(std::size_t v = 0; v < pts.size(); ++v)
+    if(limb(v) >= 0) ++limb_size[limb(v)];
+  Pipeline<Mesh> plain, nested;
+  plain.run(shape.mesh, 600, shape.symmetries, {});
+  nested.run(shape.mesh, 600, shape.symmetries, {}, IRS::parameters::nested_symmetries(true));
+  for(const auto& c : plain.curves) EXPECT_FALSE(c.nested);
+  std::size_t number_nested = 0, limb_regions = 0;
+  for(std::size_t c = 0; c < nested.curves.size(); ++c)
+  {
+    expect_polylines_are_connected(shape.mesh, nested.curves[c]);
+    if(!nested.curves[c].nested) continue;
+    ++number_nested;
+    std::size_t region = 0, on_limbs = 0, per_limb[4] = {0, 0, 0, 0};
+    for(std::size_t v = 0; v < pts.size(); ++v)
+      if(nested.vertex_region[v] == int(c))
+      {
+        ++region;
+        if(limb(v) >= 0) { ++on_limbs; ++per_limb[limb(v)]; }
+      }
+    double best_share = 0.;
+    for(int l = 0; l < 4; ++l) best_share = (std::max)(best_share, double(per_limb[l]) / double(limb_size[l]));
+    std::cout << "[ stick figure ] nested curve " << c << ": region of " << region << " vertices, "
+              << on_limbs << " on the limbs, " << 100. * best_share << " % of one limb" << std::endl;
+    if(double(on_limbs) >= 0.7 * double(region) && best_share >= 0.5) ++limb_regions;
+  }
+  std::cout << "[ stick figure ] curves: " << plain.curves.size() << " without, " << nested.curves.size()
+            << " with nested symmetries (" << number_nested << " nested, " << limb_regions << " a limb's)"
+            << std::endl;
+  EXPECT_GE(limb_regions, 1u);
+  ASSERT_EQ(nested.curves.size() - number_nested, plain.curves.size());
+  for(std::size_t c = 0; c < plain.curves.size(); ++c)
+  {
+    EXPECT_FALSE(nested.curves[c].nested);
+    EXPECT_EQ(nested.curves[c].voting_pair, plain.curves[c].voting_pair);
+  }
 }
 
 // ---------------------------------------------------------------- known mirror maps

@@ -63,6 +63,10 @@ struct Irsa_curve
   /// refinement iterations run, and whether the support was stable at the end
   std::size_t number_of_iterations = 0;
   bool converged = false;
+  /// whether the curve is the axis of a part found below the paper's
+  /// selection (named parameter `nested_symmetries`); the region growing
+  /// scales its speed by its own largest support
+  bool nested = false;
 
   /// all vertices of the curve, sorted, without duplicates
   std::vector<std::size_t> vertices() const
@@ -131,6 +135,7 @@ Curve_settings curve_settings(const Irsa_voting_result& vr, const Curves_mesh& m
                                                     default_number_of_refinement_iterations));
   st.pruning_threshold = choose_parameter(get_parameter(np, inp::pruning_threshold), default_pruning_threshold);
   st.close_curves = choose_parameter(get_parameter(np, inp::close_curves), false);
+  st.nested_symmetries = choose_parameter(get_parameter(np, inp::nested_symmetries), false);
   const double vicinity = choose_parameter(get_parameter(np, inp::vicinity_radius), default_vicinity_radius);
   const double eps = choose_parameter(get_parameter(np, inp::distance_threshold), default_distance_threshold);
 
@@ -190,6 +195,7 @@ inline Irsa_curve to_irsa_curve(const Working_curve& w, const Irsa_voting_result
   c.eligible_pairs = w.pairs;
   c.number_of_iterations = w.iterations;
   c.converged = w.converged;
+  c.nested = w.nested;
   return c;
 }
 
@@ -246,6 +252,27 @@ inline Irsa_curve to_irsa_curve(const Working_curve& w, const Irsa_voting_result
 /// it is removed. A part that the better curve's reflection maps elsewhere
 /// (a leg, mapped to the other leg by the body's reflection) is a nested
 /// symmetry and its curve is kept.
+///
+/// **2b. Nested symmetries** (`nested_symmetries`, not in the paper). nu
+/// grows like the cube of a part's supporting pairs, so that an arm's axis
+/// ranks below thousands of variants of the body's axes. With this option
+/// the selection goes on below step 1 for the axes of parts that a kept
+/// reflection maps *elsewhere* (a leg onto the other leg). A boundary is
+/// stood for by the samples of its eligible pairs; it is dropped when more
+/// than half of them lie where a kept curve's reflection holds and either
+/// more than a quarter of those are mapped near the set itself or more than
+/// 5 % of them are near their own mirror (a part mapped elsewhere holds no
+/// fixed point). First every boundary is tested against the curves of step
+/// 2; then tau gets back its values before the suppression of step 1, and the
+/// boundaries are taken by nu again: one with fewer than 2 % of the samples
+/// in its eligible pairs is dropped, one that the reflection of a nested
+/// curve taken before dominates by the same test is dropped, and so is one
+/// whose boundary itself a kept reflection maps mostly onto itself (another
+/// plane through the axis of a body of revolution); any other becomes a
+/// nested curve (`Irsa_curve::nested`) and suppresses tau in its vicinity.
+/// At most 100 boundaries are examined, and the curves stay at most
+/// `maximum_number_of_curves`. A nested curve's front grows at
+/// mu / its own largest mu (step 3).
 ///
 /// **3. Iterative refinement.** All curves grow regions at once (grass fire
 /// along the mesh edges from the whole curve, so fronts move orthogonally to
@@ -330,6 +357,15 @@ inline Irsa_curve to_irsa_curve(const Working_curve& w, const Irsa_voting_result
 ///     \cgalParamType{bool}
 ///     \cgalParamDefault{false}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{nested_symmetries}
+///     \cgalParamDescription{whether to go on below the paper's selection for the axes of smaller parts
+///       (limbs, fingers, tentacles) that no selected curve's reflection maps onto themselves: the
+///       paper's ranking by nu, which grows like the cube of a part's supporting pairs, leaves only
+///       the shape's global symmetries on most shapes; see below. Such curves have
+///       `Irsa_curve::nested` set, and their regions grow at their own speed. For segmentation.}
+///     \cgalParamType{bool}
+///     \cgalParamDefault{false}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{distance_threshold}
 ///     \cgalParamDescription{eps_DIS, the relative distance tolerance of the re-vote's test
 ///       d(p,m') ~ d(q,m') and of the reflection test; pass the voting's value (the absolute floor is
@@ -383,8 +419,9 @@ OutputIterator extract_irsa_curves(const TriangleMesh& tm, const Geodesic_distan
     t[std::size_t(get(vim, v))] = std::isfinite(x) ? x : 0.;
   }
 
-  std::vector<internal::Working_curve> curves = internal::select_initial_curves(m, D, voting, t, st);
-  internal::refine_curves<ConcurrencyTag>(m, D, st, curves);
+  internal::Boundary_ranking ranking(m, D, voting, t, st);
+  std::vector<internal::Working_curve> curves = internal::select_initial_curves(ranking, st);
+  internal::refine_curves<ConcurrencyTag>(m, D, st, curves, &voting, st.nested_symmetries ? &ranking : nullptr);
   internal::prune_curves(m, D, st, curves);
   for(const auto& c : curves)
     *out++ = internal::to_irsa_curve(c, voting);

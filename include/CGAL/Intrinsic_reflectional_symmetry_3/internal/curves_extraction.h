@@ -45,6 +45,11 @@ struct Curve_settings
   double vicinity = 0.;        // absolute
   double ignition = 0.;        // absolute: region growing delay of a seed of speed 1
   double maximum_overlap = 0.5;
+  bool nested_symmetries = false;
+  double minimum_part = 0.02;           // of the samples, in a nested curve's eligible pairs
+  std::size_t nested_candidates = 100;  // boundaries examined for nested curves
+  double nested_onto_itself = 0.25;     // a nested part is mapped elsewhere: at most this share onto itself,
+  double nested_fixed_points = 0.05;    // and at most this share near its own mirror
   std::size_t number_of_landmarks = 64;
   Symmetry_tolerance symmetry;
   Distance_tolerance tolerance;
@@ -62,6 +67,7 @@ struct Working_curve
   std::vector<std::pair<std::size_t, std::size_t>> initial_pairs, pairs;
   std::size_t iterations = 0;
   bool converged = false;
+  bool nested = false;                       // found by add_nested_curves()
 
   std::vector<std::size_t> flat_vertices() const
   {
@@ -101,88 +107,133 @@ inline bool significant_drop(const std::vector<double>& v, double ratio)
   return n >= 4 && d > d1 + (v[n - 4] - v[n - 3]);
 }
 
-/// Step 1. Ranks the voted boundaries by nu = int_beta tau * mu (trapezoidal
-/// rule on the level set, see curves_level_set.h), takes the best, sets tau
-/// to zero within `vicinity` of its beta (edge-path distance), and repeats.
+/// The voted boundaries ranked by nu = int_beta tau * mu (trapezoidal rule
+/// on the level set, see curves_level_set.h) under a tau that is set to zero
+/// within `vicinity` (edge-path distance) of every boundary taken.
+class Boundary_ranking
+{
+public:
+  Boundary_ranking(const Curves_mesh& m, const Geodesic_distance_matrix& D, const Irsa_voting_result& vr,
+                   const std::vector<double>& tau, const Curve_settings& st)
+    : m_(m), D_(D), vr_(vr), st_(st), tracer_(m), tau_(tau), t_(tau), taken_(vr.voting_pairs.size(), 0),
+      weights_(vr.voting_pairs.size()), length_(vr.voting_pairs.size(), 0.), dij_(m)
+  {
+    std::vector<Level_set_polyline> pls;
+    for(std::size_t k = 0; k < vr.voting_pairs.size(); ++k)
+    {
+      const Irsa_voting_pair& vp = vr.voting_pairs[k];
+      tracer_.trace(D, vp.a, vp.b, vp.boundary, pls);
+      Level_set_tracer::weights_on_boundary(pls, vp.boundary, weights_[k]);
+      for(double w : weights_[k]) length_[k] += w;
+    }
+  }
+
+  static constexpr std::size_t none = std::size_t(-1);
+
+  /// the untaken boundary of largest positive nu (`none` if there is none), and its nu
+  std::size_t best(double& best_nu) const
+  {
+    std::size_t best = none;
+    best_nu = 0.;
+    for(std::size_t k = 0; k < taken_.size(); ++k)
+    {
+      if(taken_[k] || !(length_[k] > 0.)) continue;
+      const Irsa_voting_pair& vp = vr_.voting_pairs[k];
+      double nu = 0.;
+      for(std::size_t i = 0; i < vp.boundary.size(); ++i)
+        nu += weights_[k][i] * t_[vp.boundary[i]] * vp.support[i];
+      if(nu > best_nu) { best_nu = nu; best = k; }
+    }
+    return best;
+  }
+
+  /// marks boundary k as taken, and sets tau to zero in its vicinity
+  void take(std::size_t k)
+  {
+    taken_[k] = 1;
+    sources_.clear();
+    for(std::size_t v : vr_.voting_pairs[k].boundary) sources_.emplace_back(v, 0.);
+    dij_.run(sources_, st_.vicinity);
+    for(std::size_t v : dij_.reached()) t_[v] = 0.;
+  }
+
+  /// tau as given to the constructor again (the taken boundaries stay taken)
+  void restore_tau() { t_ = tau_; }
+
+  /// marks boundary k as taken without touching tau
+  void discard(std::size_t k) { taken_[k] = 1; }
+
+  double length(std::size_t k) const { return length_[k]; }
+
+  /// the curve of boundary k, before refinement
+  Working_curve curve(std::size_t k, double nu)
+  {
+    const Irsa_voting_pair& vp = vr_.voting_pairs[k];
+    Working_curve w;
+    w.pair = k;
+    w.a = vp.a;
+    w.b = vp.b;
+    w.nu = nu;
+    w.length = length_[k];
+    tracer_.trace(D_, vp.a, vp.b, vp.boundary, w.polylines);
+    w.initial_pairs = vp.eligible_pairs;
+    w.pairs = vp.eligible_pairs;
+    return w;
+  }
+
+private:
+  const Curves_mesh& m_;
+  const Geodesic_distance_matrix& D_;
+  const Irsa_voting_result& vr_;
+  const Curve_settings& st_;
+  Level_set_tracer tracer_;
+  std::vector<double> tau_, t_;
+  std::vector<char> taken_;
+  std::vector<std::vector<double>> weights_;
+  std::vector<double> length_;
+  Edge_dijkstra dij_;
+  std::vector<std::pair<std::size_t, double>> sources_;
+};
+
+/// Step 1. Takes the best ranked boundary (`Boundary_ranking`) and repeats.
 /// The value of the stopping rule is the average of tau * mu along the
 /// boundary, nu / length(beta), recorded when the boundary is chosen; the
 /// selection stops before the first boundary whose value makes a significant
 /// drop (`significant_drop()`). It also stops when no boundary has a positive
 /// nu left, and after `maximum_number_of_curves`.
-inline std::vector<Working_curve>
-select_initial_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D, const Irsa_voting_result& vr,
-                      const std::vector<double>& tau, const Curve_settings& st,
-                      std::vector<double>* selection_values = nullptr)
+inline std::vector<Working_curve> select_initial_curves(Boundary_ranking& ranking, const Curve_settings& st,
+                                                        std::vector<double>* selection_values = nullptr)
 {
-  const std::size_t np = vr.voting_pairs.size();
-  Level_set_tracer tracer(m);
-  std::vector<std::vector<double>> weights(np);
-  std::vector<double> length(np, 0.);
-  std::vector<Level_set_polyline> pls;
-  for(std::size_t k = 0; k < np; ++k)
-  {
-    const Irsa_voting_pair& vp = vr.voting_pairs[k];
-    tracer.trace(D, vp.a, vp.b, vp.boundary, pls);
-    Level_set_tracer::weights_on_boundary(pls, vp.boundary, weights[k]);
-    for(double w : weights[k]) length[k] += w;
-  }
-
-  std::vector<double> t = tau;
-  std::vector<char> taken(np, 0);
   std::vector<std::size_t> chosen;
   std::vector<double> values, nus;
-  Edge_dijkstra dij(m);
-  std::vector<std::pair<std::size_t, double>> sources;
   while(chosen.size() < st.maximum_number_of_curves)
   {
-    std::size_t best = np;
     double best_nu = 0.;
-    for(std::size_t k = 0; k < np; ++k)
-    {
-      if(taken[k] || !(length[k] > 0.)) continue;
-      const Irsa_voting_pair& vp = vr.voting_pairs[k];
-      double nu = 0.;
-      for(std::size_t i = 0; i < vp.boundary.size(); ++i)
-        nu += weights[k][i] * t[vp.boundary[i]] * vp.support[i];
-      if(nu > best_nu) { best_nu = nu; best = k; }
-    }
-    if(best == np) break;
-    taken[best] = 1;
-    chosen.push_back(best);
-    nus.push_back(best_nu);
-    values.push_back(best_nu / length[best]);
-
+    const std::size_t best = ranking.best(best_nu);
+    if(best == Boundary_ranking::none) break;
+    values.push_back(best_nu / ranking.length(best));
     // the stopping rule on the drops of the average
     if(significant_drop(values, st.stopping_ratio))
-    {
-      chosen.pop_back();
-      nus.pop_back();
       break;
-    }
-    // suppress tau in the vicinity of the chosen boundary
-    sources.clear();
-    for(std::size_t v : vr.voting_pairs[best].boundary) sources.emplace_back(v, 0.);
-    dij.run(sources, st.vicinity);
-    for(std::size_t v : dij.reached()) t[v] = 0.;
+    chosen.push_back(best);
+    nus.push_back(best_nu);
+    ranking.take(best);
   }
   if(selection_values) *selection_values = values;
 
   std::vector<Working_curve> curves;
   for(std::size_t c = 0; c < chosen.size(); ++c)
-  {
-    const Irsa_voting_pair& vp = vr.voting_pairs[chosen[c]];
-    Working_curve w;
-    w.pair = chosen[c];
-    w.a = vp.a;
-    w.b = vp.b;
-    w.nu = nus[c];
-    w.length = length[chosen[c]];
-    tracer.trace(D, vp.a, vp.b, vp.boundary, w.polylines);
-    w.initial_pairs = vp.eligible_pairs;
-    w.pairs = vp.eligible_pairs;
-    curves.push_back(std::move(w));
-  }
+    curves.push_back(ranking.curve(chosen[c], nus[c]));
   return curves;
+}
+
+inline std::vector<Working_curve>
+select_initial_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D, const Irsa_voting_result& vr,
+                      const std::vector<double>& tau, const Curve_settings& st,
+                      std::vector<double>* selection_values = nullptr)
+{
+  Boundary_ranking ranking(m, D, vr, tau, st);
+  return select_initial_curves(ranking, st, selection_values);
 }
 
 /// The landmarks of a curve's reflection: its voting pair and its
@@ -270,7 +321,32 @@ inline std::vector<Region_seed_curve> region_seeds(const std::vector<Working_cur
     }
     seeds[c].mask = masks[c];
   }
+  std::vector<bool> nested(curves.size());
+  for(std::size_t c = 0; c < curves.size(); ++c) nested[c] = curves[c].nested;
+  scale_seed_support(seeds, nested);
   return seeds;
+}
+
+/// Whether a better curve (its support mask and mirror partners) dominates
+/// the part `part` of `size` vertices (step 1b).
+inline bool is_dominated(const std::vector<unsigned char>& part, std::size_t size, double maximum_overlap,
+                         const std::vector<unsigned char>& better_mask, const std::vector<std::size_t>& better_partner)
+{
+  std::size_t inside = 0, onto_itself = 0;
+  for(std::size_t v = 0; v < part.size(); ++v)
+  {
+    if(!part[v] || !better_mask[v]) continue;
+    ++inside;
+    onto_itself += (better_partner[v] != Mirror_matcher::none && part[better_partner[v]]);
+  }
+  return double(inside) > maximum_overlap * double(size) && double(onto_itself) > maximum_overlap * double(inside);
+}
+
+inline std::size_t count_set(const std::vector<unsigned char>& x)
+{
+  std::size_t n = 0;
+  for(unsigned char c : x) n += (c != 0);
+  return n;
 }
 
 /// Step 1b. Keeps the curves that are the axes of different parts. A curve
@@ -286,41 +362,185 @@ inline std::vector<Region_seed_curve> region_seeds(const std::vector<Working_cur
 inline void remove_dominated_curves(const Curves_mesh& m, double maximum_overlap, double axis_radius,
                                     std::vector<Working_curve>& curves,
                                     std::vector<std::vector<unsigned char>>& masks,
-                                    const std::vector<std::vector<std::size_t>>& partners)
+                                    std::vector<std::vector<std::size_t>>& partners)
 {
   if(curves.empty()) return;
-  const std::size_t nv = m.number_of_vertices;
   std::vector<Working_curve> kept_curves;
   std::vector<std::vector<unsigned char>> kept_masks;
-  std::vector<std::size_t> kept_index;
+  std::vector<std::vector<std::size_t>> kept_partners;
   for(std::size_t c = 0; c < curves.size(); ++c)
   {
     const std::vector<unsigned char> part =
       curve_part(m, curves[c].flat_vertices(), masks[c], partners[c], axis_radius);
-    std::size_t size = 0;
-    for(std::size_t v = 0; v < nv; ++v) size += part[v];
+    const std::size_t size = count_set(part);
     bool keep = true;
-    for(std::size_t k = 0; keep && k < kept_index.size(); ++k)
-    {
-      const std::vector<unsigned char>& mask_k = kept_masks[k];
-      const std::vector<std::size_t>& partner_k = partners[kept_index[k]];
-      std::size_t inside = 0, onto_itself = 0;
-      for(std::size_t v = 0; v < nv; ++v)
-      {
-        if(!part[v] || !mask_k[v]) continue;
-        ++inside;
-        onto_itself += (partner_k[v] != Mirror_matcher::none && part[partner_k[v]]);
-      }
-      if(double(inside) > maximum_overlap * double(size) && double(onto_itself) > maximum_overlap * double(inside))
-        keep = false;
-    }
+    for(std::size_t k = 0; keep && k < kept_curves.size(); ++k)
+      keep = !is_dominated(part, size, maximum_overlap, kept_masks[k], kept_partners[k]);
     if(!keep) continue;
     kept_curves.push_back(std::move(curves[c]));
     kept_masks.push_back(std::move(masks[c]));
-    kept_index.push_back(c);
+    kept_partners.push_back(std::move(partners[c]));
   }
   curves.swap(kept_curves);
   masks.swap(kept_masks);
+  partners.swap(kept_partners);
+}
+
+/// `is_dominated()` on the samples alone, as a cheap test of many
+/// boundaries, made stricter for nested parts. The part is stood for by the
+/// samples of the voting pair's eligible pairs. A better curve dominates it
+/// when more than `maximum_overlap` of them lie where its reflection holds and
+/// either more than `maximum_onto_itself` of those have their partner's
+/// nearest sample within `radius` of one of them, or more than
+/// `maximum_fixed` of them are within `radius` of their own partner: a part
+/// that the better reflection maps elsewhere (a limb onto the other limb)
+/// cannot contain its fixed points.
+class Sample_domination_test
+{
+public:
+  Sample_domination_test(const Geodesic_distance_matrix& D, double radius, double maximum_overlap,
+                         double maximum_onto_itself, double maximum_fixed)
+    : D_(D), radius_(radius), overlap_(maximum_overlap), onto_(maximum_onto_itself), fixed_(maximum_fixed),
+      nearest_(D.number_of_vertices(), 0), neighbors_(D.number_of_sources()),
+      in_set_(D.number_of_sources(), 0), near_set_(D.number_of_sources(), 0)
+  {
+    const std::size_t n = D.number_of_sources(), nv = D.number_of_vertices();
+    std::vector<float> best(nv, std::numeric_limits<float>::infinity());
+    for(std::size_t x = 0; x < n; ++x)
+    {
+      const float* row = D.row(x);
+      for(std::size_t v = 0; v < nv; ++v)
+        if(row[v] < best[v]) { best[v] = row[v]; nearest_[v] = x; }
+      for(std::size_t y = 0; y < n; ++y)
+        if(D(x, D.sources()[y]) <= radius) neighbors_[x].push_back(y);
+    }
+  }
+
+  bool dominated(const std::vector<std::pair<std::size_t, std::size_t>>& pairs,
+                 const std::vector<unsigned char>& better_mask, const std::vector<std::size_t>& better_partner)
+  {
+    set_.clear();
+    for(const auto& pq : pairs)
+      for(std::size_t x : {pq.first, pq.second})
+        if(!in_set_[x]) { in_set_[x] = 1; set_.push_back(x); }
+    for(std::size_t x : set_)
+      for(std::size_t y : neighbors_[x]) near_set_[y] = 1;
+    std::size_t inside = 0, onto_itself = 0, fixed = 0;
+    for(std::size_t x : set_)
+    {
+      const std::size_t v = D_.sources()[x];
+      if(!better_mask[v]) continue;
+      ++inside;
+      const std::size_t w = better_partner[v];
+      if(w == Mirror_matcher::none) continue;
+      onto_itself += near_set_[nearest_[w]];
+      fixed += (D_(x, w) <= radius_);
+    }
+    for(std::size_t x : set_)
+    {
+      in_set_[x] = 0;
+      for(std::size_t y : neighbors_[x]) near_set_[y] = 0;
+    }
+    return double(inside) > overlap_ * double(set_.size()) &&
+           (double(onto_itself) > onto_ * double(inside) || double(fixed) > fixed_ * double(inside));
+  }
+
+private:
+  const Geodesic_distance_matrix& D_;
+  double radius_, overlap_, onto_, fixed_;
+  std::vector<std::size_t> nearest_;                // nearest sample of each vertex
+  std::vector<std::vector<std::size_t>> neighbors_; // samples within the radius of each sample
+  std::vector<unsigned char> in_set_, near_set_;
+  std::vector<std::size_t> set_;
+};
+
+/// Step 1c (`nested_symmetries`). The paper's ranking by nu favours large
+/// symmetric parts overwhelmingly (nu grows like the cube of the number of
+/// supporting pairs: on a human body the axis of an arm has about 1e-4 of the
+/// body axis' nu), so that after the stopping rule only the global
+/// symmetries are left, and thousands of their variants rank above the axis
+/// of a limb. This step
+///  - drops the boundaries that a curve kept so far dominates, by the test on
+///    their samples (`Sample_domination_test`), without touching tau (the
+///    vicinity of the body's boundaries covers the limbs), then gives tau
+///    back its values before step 1's suppression;
+///  - goes on down the ranking: a boundary whose eligible pairs have fewer
+///    than `minimum_part` of the samples, or that a nested curve kept so far
+///    dominates (same test), or whose boundary a kept reflection maps mostly
+///    onto itself, is dropped; any other is kept as a nested curve and
+///    suppresses tau in its vicinity, as in step 1.
+/// At most `nested_candidates` boundaries are examined, and the curves stay
+/// at most `maximum_number_of_curves`. A nested curve's part is not tested by
+/// `curve_part()`: seen from the rest of the shape, the few landmarks of a
+/// small part make its reflection hold almost everywhere.
+template <class ConcurrencyTag>
+void add_nested_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D, const Irsa_voting_result& vr,
+                       const Curve_settings& st, Boundary_ranking& ranking, std::vector<Working_curve>& curves,
+                       std::vector<std::vector<unsigned char>>& masks,
+                       std::vector<std::vector<std::size_t>>& partners)
+{
+  const std::vector<unsigned char> everywhere(m.number_of_vertices, 1);
+  Sample_domination_test quick(D, 1.5 * st.ignition, st.maximum_overlap, st.nested_onto_itself,
+                               st.nested_fixed_points);
+  for(std::size_t k = 0; k < vr.voting_pairs.size(); ++k)
+    for(std::size_t c = 0; c < curves.size(); ++c)
+      if(quick.dominated(vr.voting_pairs[k].eligible_pairs, masks[c], partners[c]))
+      {
+        ranking.discard(k);
+        break;
+      }
+  ranking.restore_tau();
+  const std::size_t first_nested = curves.size();
+  Edge_dijkstra dij(m);
+  std::vector<std::pair<std::size_t, double>> sources;
+  std::vector<unsigned char> near_beta(m.number_of_vertices, 0);
+  const double minimum_samples = st.minimum_part * double(D.number_of_sources());
+  for(std::size_t examined = 0;
+      examined < st.nested_candidates && curves.size() < st.maximum_number_of_curves; ++examined)
+  {
+    double nu = 0.;
+    const std::size_t k = ranking.best(nu);
+    if(k == Boundary_ranking::none) break;
+    ranking.discard(k);
+    const auto& pairs = vr.voting_pairs[k].eligible_pairs;
+    if(double(2 * pairs.size()) < minimum_samples) continue;
+    bool dominated = false;
+    for(std::size_t c = first_nested; !dominated && c < curves.size(); ++c)
+      dominated = quick.dominated(pairs, masks[c], partners[c]);
+    if(dominated) continue;
+    Working_curve w = ranking.curve(k, nu);
+    // the boundary itself: mapped onto itself by a kept reflection, it is
+    // another symmetry of that curve's part (a plane through the axis of a
+    // body of revolution), whatever its eligible pairs
+    const std::vector<std::size_t> beta = w.flat_vertices();
+    sources.clear();
+    for(std::size_t v : beta) sources.emplace_back(v, 0.);
+    dij.run(sources, 1.5 * st.ignition);
+    std::fill(near_beta.begin(), near_beta.end(), 0);
+    for(std::size_t v : dij.reached()) near_beta[v] = 1;
+    for(std::size_t c = 0; !dominated && c < curves.size(); ++c)
+    {
+      std::size_t inside = 0, onto_itself = 0;
+      for(std::size_t v : beta)
+      {
+        if(!masks[c][v]) continue;
+        ++inside;
+        onto_itself += (partners[c][v] != Mirror_matcher::none && near_beta[partners[c][v]]);
+      }
+      dominated = double(inside) > st.maximum_overlap * double(beta.size()) &&
+                  double(onto_itself) > st.maximum_overlap * double(inside);
+    }
+    if(dominated) continue;
+    ranking.take(k);
+    w.nested = true;
+    recompute_support(D, st, w);
+    std::vector<std::size_t> partner;
+    const auto landmarks = curve_landmarks<ConcurrencyTag>(D, w.a, w.b, w.initial_pairs, everywhere,
+                                                           st.number_of_landmarks, st.symmetry);
+    masks.push_back(symmetry_support_mask<ConcurrencyTag>(D, w.flat_vertices(), landmarks, st.symmetry, &partner));
+    partners.push_back(std::move(partner));
+    curves.push_back(std::move(w));
+  }
 }
 
 /// Step 2. Region growing from all curves, then each curve's mu re-voted by
@@ -329,7 +549,8 @@ inline void remove_dominated_curves(const Curves_mesh& m, double maximum_overlap
 /// most `number_of_iterations` times. Curves left without voters are removed.
 template <class ConcurrencyTag>
 void refine_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D, const Curve_settings& st,
-                   std::vector<Working_curve>& curves)
+                   std::vector<Working_curve>& curves, const Irsa_voting_result* vr = nullptr,
+                   Boundary_ranking* nested = nullptr)
 {
   for(auto& c : curves) recompute_support(D, st, c);
   // the curves do not move and their landmarks come from the initial pairs:
@@ -337,6 +558,8 @@ void refine_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D, cons
   std::vector<std::vector<std::size_t>> partners;
   std::vector<std::vector<unsigned char>> masks = curve_masks<ConcurrencyTag>(D, st, curves, &partners);
   remove_dominated_curves(m, st.maximum_overlap, 2. * st.ignition, curves, masks, partners);
+  if(nested != nullptr && vr != nullptr)
+    add_nested_curves<ConcurrencyTag>(m, D, *vr, st, *nested, curves, masks, partners);
   for(std::size_t it = 0; it < st.number_of_iterations && !curves.empty(); ++it)
   {
     const Region_growing_result rg = grow_regions(m, region_seeds(curves, masks), st.ignition);

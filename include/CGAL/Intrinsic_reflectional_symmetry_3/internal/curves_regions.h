@@ -51,6 +51,30 @@ struct Region_growing_result
   std::vector<double> time;   // arrival time (+inf where unreached)
 };
 
+/// Scales the support of the seeds for `grow_regions()`: the curves of the
+/// paper's selection by the largest support among them (strong curves claim
+/// more surface), a nested curve (`nested[c]`) by its own largest support:
+/// its support comes from a part that is small next to the shape, and its
+/// front would otherwise not even reach across that part before the front of
+/// the whole shape's axis.
+inline void scale_seed_support(std::vector<Region_seed_curve>& seeds, const std::vector<bool>& nested)
+{
+  auto largest = [](const Region_seed_curve& c) {
+    double m = 0.;
+    for(double s : c.support) m = (std::max)(m, s);
+    return m;
+  };
+  double top = 0.;
+  for(std::size_t c = 0; c < seeds.size(); ++c)
+    if(!nested[c]) top = (std::max)(top, largest(seeds[c]));
+  for(std::size_t c = 0; c < seeds.size(); ++c)
+  {
+    const double scale = nested[c] ? largest(seeds[c]) : top;
+    if(scale > 0.)
+      for(double& s : seeds[c].support) s /= scale;
+  }
+}
+
 /// Grows the regions of `curves` on `m`; `ignition` is a length.
 inline Region_growing_result grow_regions(const Curves_mesh& m, const std::vector<Region_seed_curve>& curves,
                                           double ignition)

@@ -77,6 +77,9 @@ std::vector<Region_seed_curve> final_curve_seeds(const Geodesic_distance_matrix&
                                                            st.number_of_landmarks, st.symmetry);
     seeds[c].mask = symmetry_support_mask<ConcurrencyTag>(D, seeds[c].vertices, landmarks, st.symmetry);
   }
+  std::vector<bool> nested(curves.size());
+  for(std::size_t c = 0; c < curves.size(); ++c) nested[c] = curves[c]->nested;
+  scale_seed_support(seeds, nested);
   return seeds;
 }
 

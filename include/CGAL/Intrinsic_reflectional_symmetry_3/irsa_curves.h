@@ -421,7 +421,7 @@ OutputIterator extract_irsa_curves(const TriangleMesh& tm, const Geodesic_distan
 
   internal::Boundary_ranking ranking(m, D, voting, t, st);
   std::vector<internal::Working_curve> curves = internal::select_initial_curves(ranking, st);
-  internal::refine_curves<ConcurrencyTag>(m, D, st, curves, &voting, st.nested_symmetries ? &ranking : nullptr);
+  internal::refine_curves<ConcurrencyTag>(m, D, st, curves, st.nested_symmetries ? &ranking : nullptr);
   internal::prune_curves(m, D, st, curves);
   for(const auto& c : curves)
     *out++ = internal::to_irsa_curve(c, voting);

@@ -115,7 +115,7 @@ class Boundary_ranking
 public:
   Boundary_ranking(const Curves_mesh& m, const Geodesic_distance_matrix& D, const Irsa_voting_result& vr,
                    const std::vector<double>& tau, const Curve_settings& st)
-    : m_(m), D_(D), vr_(vr), st_(st), tracer_(m), tau_(tau), t_(tau), taken_(vr.voting_pairs.size(), 0),
+    : D_(D), vr_(vr), st_(st), tracer_(m), tau_(tau), t_(tau), taken_(vr.voting_pairs.size(), 0),
       weights_(vr.voting_pairs.size()), length_(vr.voting_pairs.size(), 0.), dij_(m)
   {
     std::vector<Level_set_polyline> pls;
@@ -181,8 +181,9 @@ public:
     return w;
   }
 
+  const Irsa_voting_result& voting() const { return vr_; }
+
 private:
-  const Curves_mesh& m_;
   const Geodesic_distance_matrix& D_;
   const Irsa_voting_result& vr_;
   const Curve_settings& st_;
@@ -474,11 +475,12 @@ private:
 /// `curve_part()`: seen from the rest of the shape, the few landmarks of a
 /// small part make its reflection hold almost everywhere.
 template <class ConcurrencyTag>
-void add_nested_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D, const Irsa_voting_result& vr,
+void add_nested_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D,
                        const Curve_settings& st, Boundary_ranking& ranking, std::vector<Working_curve>& curves,
                        std::vector<std::vector<unsigned char>>& masks,
                        std::vector<std::vector<std::size_t>>& partners)
 {
+  const Irsa_voting_result& vr = ranking.voting();
   const std::vector<unsigned char> everywhere(m.number_of_vertices, 1);
   Sample_domination_test quick(D, 1.5 * st.ignition, st.maximum_overlap, st.nested_onto_itself,
                                st.nested_fixed_points);
@@ -549,8 +551,7 @@ void add_nested_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D, 
 /// most `number_of_iterations` times. Curves left without voters are removed.
 template <class ConcurrencyTag>
 void refine_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D, const Curve_settings& st,
-                   std::vector<Working_curve>& curves, const Irsa_voting_result* vr = nullptr,
-                   Boundary_ranking* nested = nullptr)
+                   std::vector<Working_curve>& curves, Boundary_ranking* nested = nullptr)
 {
   for(auto& c : curves) recompute_support(D, st, c);
   // the curves do not move and their landmarks come from the initial pairs:
@@ -558,8 +559,8 @@ void refine_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D, cons
   std::vector<std::vector<std::size_t>> partners;
   std::vector<std::vector<unsigned char>> masks = curve_masks<ConcurrencyTag>(D, st, curves, &partners);
   remove_dominated_curves(m, st.maximum_overlap, 2. * st.ignition, curves, masks, partners);
-  if(nested != nullptr && vr != nullptr)
-    add_nested_curves<ConcurrencyTag>(m, D, *vr, st, *nested, curves, masks, partners);
+  if(nested != nullptr)
+    add_nested_curves<ConcurrencyTag>(m, D, st, *nested, curves, masks, partners);
   for(std::size_t it = 0; it < st.number_of_iterations && !curves.empty(); ++it)
   {
     const Region_growing_result rg = grow_regions(m, region_seeds(curves, masks), st.ignition);

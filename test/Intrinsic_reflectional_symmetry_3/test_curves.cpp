@@ -617,6 +617,42 @@ TEST(Curves, SpectralNearestRowsEqualTheLiteralMinimum)
   EXPECT_GE(same + 2, query.size());
 }
 
+TEST(Curves, SpectralNearestRowsStayOffTheirOwnSide)
+{
+  CGAL::Random rng(6);
+  const Eigen::Index n = 500, k = 30;
+  Eigen::MatrixXd P(n, k), R(k, k);
+  for(Eigen::Index i = 0; i < n; ++i)
+    for(Eigen::Index j = 0; j < k; ++j) P(i, j) = rng.get_double(-1., 1.);
+  for(Eigen::Index i = 0; i < k; ++i)
+    for(Eigen::Index j = 0; j < k; ++j) R(i, j) = rng.get_double(-1., 1.);
+  const Eigen::MatrixXd C = Eigen::HouseholderQR<Eigen::MatrixXd>(R).householderQ();
+  std::vector<signed char> side(static_cast<std::size_t>(n));
+  for(signed char& s : side) s = static_cast<signed char>(rng.get_int(-1, 2));
+  std::vector<std::size_t> query(static_cast<std::size_t>(n));
+  std::iota(query.begin(), query.end(), std::size_t(0));
+  std::vector<std::size_t> image(static_cast<std::size_t>(n)), free_image(static_cast<std::size_t>(n));
+  IRS::internal::nearest_rows<CGAL::Parallel_if_available_tag>(P, C, query, image, &side);
+  IRS::internal::nearest_rows<CGAL::Parallel_if_available_tag>(P, C, query, free_image);
+  std::size_t constrained = 0;
+  for(std::size_t r = 0; r < std::size_t(n); ++r)
+  {
+    // the literal minimum over the rows not on r's side
+    const Eigen::RowVectorXd q = P.row(Eigen::Index(r)) * C;
+    double best_d = std::numeric_limits<double>::infinity();
+    for(Eigen::Index j = 0; j < n; ++j)
+      if(side[r] == 0 || side[std::size_t(j)] != side[r]) best_d = (std::min)(best_d, (P.row(j) - q).squaredNorm());
+    EXPECT_TRUE(side[r] == 0 || side[image[r]] != side[r]) << "row " << r;
+    EXPECT_LE((P.row(Eigen::Index(image[r])) - q).squaredNorm(), best_d * (1. + 1e-4) + 1e-9) << "row " << r;
+    constrained += image[r] != free_image[r];
+  }
+  EXPECT_GT(constrained, 0u); // the test does exercise the side rule
+  // all rows on one side: nothing else is left, so the plain nearest row
+  const std::vector<signed char> one_side(static_cast<std::size_t>(n), 1);
+  IRS::internal::nearest_rows<CGAL::Parallel_if_available_tag>(P, C, query, image, &one_side);
+  EXPECT_EQ(image, free_image);
+}
+
 TEST(Curves, RegionSpectrumIsOrthonormalAndIncreasing)
 {
   const auto shape = IRS::generate_ellipsoid<Mesh>(1500);
@@ -694,6 +730,50 @@ TEST(Curves, SpectralRefinementMendsAWrongPatch)
             << " % within 2 edges of the true mirror" << std::endl;
   EXPECT_LE(before, 0.9);
   EXPECT_GE(after, 0.98);
+  EXPECT_EQ(best, sequential); // the same at any thread count
+}
+
+TEST(Curves, SpectralRefinementWithSidesMendsHandsMappedToThemselves)
+{
+  // the mirror map of the stick figure with the outer half of both arms
+  // mapped to itself, as the landmark match did on FAUST tr_reg_003's raised
+  // hands: the projection alone keeps such an extremity; the side rule (no
+  // vertex beyond |x| = 0.2 maps to its own side) mends it
+  const auto shape = IRS::generate_stick_figure<Mesh>(3000);
+  const std::vector<Point> pts = vertex_points(shape.mesh);
+  const IRS::Known_symmetry& s = shape.symmetries[0];
+  const IRS::internal::Curves_mesh m = IRS::internal::make_curves_mesh(shape.mesh, IRS::parameters::default_values());
+  std::vector<std::size_t> verts(m.number_of_vertices), best(m.number_of_vertices);
+  std::iota(verts.begin(), verts.end(), std::size_t(0));
+  std::vector<signed char> side(m.number_of_vertices, 0);
+  for(std::size_t v = 0; v < verts.size(); ++v)
+  {
+    ASSERT_GE(s.mirror[v], 0);
+    best[v] = std::abs(pts[v].x()) > 1.1 ? v : std::size_t(s.mirror[v]);
+    side[v] = pts[v].x() > 0.2 ? 1 : (pts[v].x() < -0.2 ? -1 : 0);
+  }
+  auto share = [&](const std::vector<std::size_t>& map) {
+    std::size_t ok = 0;
+    for(std::size_t v = 0; v < map.size(); ++v)
+      ok += distance(pts[map[v]], pts[std::size_t(s.mirror[v])]) <= 2. * shape.mean_edge_length;
+    return double(ok) / double(map.size());
+  };
+  const double before = share(best);
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(shape.mesh, IRS::parameters::number_of_samples(600).random_seed(1u));
+  const std::vector<unsigned char> in_region(m.number_of_vertices, 1);
+  std::vector<std::size_t> without = best, sequential = best;
+  ASSERT_TRUE(IRS::internal::spectral_refinement<CGAL::Parallel_if_available_tag>(m, samples, verts, in_region,
+                                                                                  150, without));
+  ASSERT_TRUE(IRS::internal::spectral_refinement<CGAL::Parallel_if_available_tag>(m, samples, verts, in_region,
+                                                                                  150, best, &side));
+  ASSERT_TRUE(IRS::internal::spectral_refinement<CGAL::Sequential_tag>(m, samples, verts, in_region, 150,
+                                                                       sequential, &side));
+  std::cout << "[ spectral refinement ] stick figure (" << s.name << "), outer arms mapped to themselves: "
+            << 100. * before << " % -> " << 100. * share(without) << " % without the side rule, "
+            << 100. * share(best) << " % with it (within 2 edges of the true mirror)" << std::endl;
+  EXPECT_GE(share(best), 0.98);
+  EXPECT_GT(share(best), share(without));
   EXPECT_EQ(best, sequential); // the same at any thread count
 }
 

@@ -47,9 +47,9 @@
 //
 // Measured (symmetry_map_benchmark, 1000 samples, CR by the protocol of Kim
 // et al. 2010; column CR0% is the same run without this step): FAUST 99.08
-// -> 99.69 %, its posed shapes 98.35 -> 99.40 % (tr_reg_002 96.4 -> 99.9 %),
-// SCAPE 63.3 -> 65.2 %; on FAUST (5K vertices) the step costs about 1.5 s
-// on two cores. Every vertex of the region is compared with every other at
+// -> 99.73 %, its posed shapes 98.35 -> 99.49 % (tr_reg_002 96.4 -> 99.9 %),
+// SCAPE 63.3 -> 65.0 %, with the side rule of symmetric_map_dense.h; on
+// FAUST (5K vertices) the step costs about 1.5 s on two cores. Every vertex of the region is compared with every other at
 // the last size, so the cost grows as the square of the region's size.
 
 namespace CGAL {
@@ -152,10 +152,12 @@ inline bool region_spectrum(const Curves_mesh& m, const std::vector<unsigned cha
 /// For each row r of `query`, `image[r]` becomes the row of P nearest to
 /// row r of P C (Euclidean; ties to the smaller row). Exact, by products of
 /// float matrices over fixed blocks of 256 queries, so that the sums, and the
-/// result, do not depend on the thread count.
+/// result, do not depend on the thread count. With `side` (by row: -1, 0 or
+/// +1), a row on a side (+1 or -1) is never sent to a row on the same side
+/// (a reflection fixes only its axis), unless no other row is left.
 template <class ConcurrencyTag>
 void nearest_rows(const Eigen::MatrixXd& P, const Eigen::MatrixXd& C, const std::vector<std::size_t>& query,
-                  std::vector<std::size_t>& image)
+                  std::vector<std::size_t>& image, const std::vector<signed char>* side = nullptr)
 {
   const std::size_t block = 256;
   const Eigen::Index n = P.rows();
@@ -173,14 +175,20 @@ void nearest_rows(const Eigen::MatrixXd& P, const Eigen::MatrixXd& C, const std:
     for(Eigen::Index i = 0; i < nr; ++i)
     {
       // |P_j - Q_i|^2 - |Q_i|^2
-      float best = std::numeric_limits<float>::infinity();
-      std::size_t arg = 0;
+      const std::size_t r = query[std::size_t(r0 + i)];
+      const int own = side != nullptr ? (*side)[r] : 0;
+      float best = std::numeric_limits<float>::infinity(), best_same = best;
+      std::size_t arg = std::size_t(n), arg_same = 0;
       for(Eigen::Index j = 0; j < n; ++j)
       {
         const float d = norms[j] - 2.f * S(i, j);
-        if(d < best) { best = d; arg = std::size_t(j); }
+        if(own != 0 && (*side)[std::size_t(j)] == own)
+        {
+          if(d < best_same) { best_same = d; arg_same = std::size_t(j); }
+        }
+        else if(d < best) { best = d; arg = std::size_t(j); }
       }
-      image[query[std::size_t(r0 + i)]] = arg;
+      image[r] = arg < std::size_t(n) ? arg : arg_same;
     }
     return true;
   });
@@ -199,7 +207,8 @@ void nearest_rows(const Eigen::MatrixXd& P, const Eigen::MatrixXd& C, const std:
 /// has fewer than 2 k1 rows).
 template <class ConcurrencyTag>
 void zoomout(const Region_spectrum& s, std::size_t k0, std::size_t k1, std::size_t step,
-             const std::vector<std::size_t>& subset, std::vector<std::size_t>& image)
+             const std::vector<std::size_t>& subset, std::vector<std::size_t>& image,
+             const std::vector<signed char>* side = nullptr)
 {
   const std::size_t n = s.rows.size();
   k1 = (std::min)(k1, std::size_t(s.basis.cols()));
@@ -223,7 +232,7 @@ void zoomout(const Region_spectrum& s, std::size_t k0, std::size_t k1, std::size
     Eigen::MatrixXd C = A.transpose() * B;
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(C, Eigen::ComputeFullU | Eigen::ComputeFullV);
     C = svd.matrixU() * svd.matrixV().transpose();
-    nearest_rows<ConcurrencyTag>(P, C, k == k1 ? all : rows, image);
+    nearest_rows<ConcurrencyTag>(P, C, k == k1 ? all : rows, image, side);
     if(k == k1) break;
   }
 }
@@ -235,11 +244,14 @@ void zoomout(const Region_spectrum& s, std::size_t k0, std::size_t k1, std::size
 /// order; the first 1000 of them). The vertices of the region on no face of it
 /// keep their partner; so does every vertex when the region has too few
 /// vertices (fewer than 4 per function, or fewer than 10 functions) or
-/// the eigensolver does not converge. Returns true if the map was refined.
+/// the eigensolver does not converge. With `vertex_side` (by vertex index:
+/// -1, 0 or +1), no vertex goes to a vertex on its own side (nearest_rows()).
+/// Returns true if the map was refined.
 template <class ConcurrencyTag>
 bool spectral_refinement(const Curves_mesh& m, const std::vector<std::size_t>& sample_vertices,
                          const std::vector<std::size_t>& verts, const std::vector<unsigned char>& in_region,
-                         std::size_t number_of_eigenfunctions, std::vector<std::size_t>& best)
+                         std::size_t number_of_eigenfunctions, std::vector<std::size_t>& best,
+                         const std::vector<signed char>* vertex_side = nullptr)
 {
   const std::size_t none = std::size_t(-1);
   Region_spectrum spec;
@@ -264,7 +276,10 @@ bool spectral_refinement(const Curves_mesh& m, const std::vector<std::size_t>& s
     if(row_of[v] != none && subset.size() < max_subset) subset.push_back(row_of[v]);
   std::sort(subset.begin(), subset.end());
   subset.erase(std::unique(subset.begin(), subset.end()), subset.end());
-  zoomout<ConcurrencyTag>(spec, 30, k, 5, subset, image);
+  std::vector<signed char> side;
+  if(vertex_side != nullptr)
+    for(std::size_t v : spec.rows) side.push_back((*vertex_side)[v]);
+  zoomout<ConcurrencyTag>(spec, 30, k, 5, subset, image, vertex_side != nullptr ? &side : nullptr);
   for(std::size_t r = 0; r < spec.rows.size(); ++r)
     best[slot[spec.rows[r]]] = spec.rows[image[r]];
   return true;

@@ -202,8 +202,7 @@ private:
 /// selection stops before the first boundary whose value makes a significant
 /// drop (`significant_drop()`). It also stops when no boundary has a positive
 /// nu left, and after `maximum_number_of_curves`.
-inline std::vector<Working_curve> select_initial_curves(Boundary_ranking& ranking, const Curve_settings& st,
-                                                        std::vector<double>* selection_values = nullptr)
+inline std::vector<Working_curve> select_initial_curves(Boundary_ranking& ranking, const Curve_settings& st)
 {
   std::vector<std::size_t> chosen;
   std::vector<double> values, nus;
@@ -220,21 +219,11 @@ inline std::vector<Working_curve> select_initial_curves(Boundary_ranking& rankin
     nus.push_back(best_nu);
     ranking.take(best);
   }
-  if(selection_values) *selection_values = values;
 
   std::vector<Working_curve> curves;
   for(std::size_t c = 0; c < chosen.size(); ++c)
     curves.push_back(ranking.curve(chosen[c], nus[c]));
   return curves;
-}
-
-inline std::vector<Working_curve>
-select_initial_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D, const Irsa_voting_result& vr,
-                      const std::vector<double>& tau, const Curve_settings& st,
-                      std::vector<double>* selection_values = nullptr)
-{
-  Boundary_ranking ranking(m, D, vr, tau, st);
-  return select_initial_curves(ranking, st, selection_values);
 }
 
 /// The landmarks of a curve's reflection: its voting pair and its

@@ -687,6 +687,17 @@ TEST(Curves, RegionSpectrumIsOrthonormalAndIncreasing)
   EXPECT_TRUE(spec.rows.empty());
 }
 
+// share of the vertices v whose map[v] lies within `tolerance` of the true
+// mirror of v
+double share_near_mirror(const std::vector<Point>& pts, const std::vector<std::ptrdiff_t>& mirror,
+                         const std::vector<std::size_t>& map, double tolerance)
+{
+  std::size_t ok = 0;
+  for(std::size_t v = 0; v < map.size(); ++v)
+    ok += distance(pts[map[v]], pts[std::size_t(mirror[v])]) <= tolerance;
+  return double(ok) / double(map.size());
+}
+
 TEST(Curves, SpectralRefinementMendsAWrongPatch)
 {
   // the x=0 mirror map of an ellipsoid (three distinct axes: no other
@@ -710,10 +721,7 @@ TEST(Curves, SpectralRefinementMendsAWrongPatch)
     wrong += patch;
   }
   auto share = [&](const std::vector<std::size_t>& map) {
-    std::size_t ok = 0;
-    for(std::size_t v = 0; v < map.size(); ++v)
-      ok += distance(pts[map[v]], pts[std::size_t(s.mirror[v])]) <= 2. * shape.mean_edge_length;
-    return double(ok) / double(map.size());
+    return share_near_mirror(pts, s.mirror, map, 2. * shape.mean_edge_length);
   };
   const double before = share(best);
   const std::vector<std::size_t> samples =
@@ -753,10 +761,7 @@ TEST(Curves, SpectralRefinementWithSidesMendsHandsMappedToThemselves)
     side[v] = pts[v].x() > 0.2 ? 1 : (pts[v].x() < -0.2 ? -1 : 0);
   }
   auto share = [&](const std::vector<std::size_t>& map) {
-    std::size_t ok = 0;
-    for(std::size_t v = 0; v < map.size(); ++v)
-      ok += distance(pts[map[v]], pts[std::size_t(s.mirror[v])]) <= 2. * shape.mean_edge_length;
-    return double(ok) / double(map.size());
+    return share_near_mirror(pts, s.mirror, map, 2. * shape.mean_edge_length);
   };
   const double before = share(best);
   const std::vector<std::size_t> samples =

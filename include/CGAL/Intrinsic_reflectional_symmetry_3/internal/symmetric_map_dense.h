@@ -220,29 +220,26 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
   for(const auto& f : m.faces)
     if(in_region[f[0]] && in_region[f[1]] && in_region[f[2]]) region_area += triangle_area(m, f);
   const std::size_t ns = D.number_of_sources();
-  // landmarks anew from the mutual sample pairs of the current map (the
-  // sample nearest to the partner of each sample of the region); false if
-  // there are fewer pairs than landmarks
-  auto landmarks_from_map = [&]() {
-    std::vector<std::size_t> image(ns, Mirror_matcher::none);
-    for(std::size_t s = 0; s < ns; ++s)
-    {
-      const std::size_t i = slot[D.sources()[s]];
-      if(i == Mirror_matcher::none || best[i] == Mirror_matcher::none) continue;
-      float nearest = std::numeric_limits<float>::infinity();
-      for(std::size_t t = 0; t < ns; ++t)
-        if(D(t, best[i]) < nearest) { nearest = D(t, best[i]); image[s] = t; }
-    }
-    std::vector<std::pair<std::size_t, std::size_t>> pairs;
-    for(std::size_t s = 0; s < ns; ++s)
-      if(image[s] != Mirror_matcher::none && image[s] >= s && image[image[s]] == s) pairs.emplace_back(s, image[s]);
-    if(pairs.size() < landmarks.size()) return false;
-    landmarks = spread_pairs(D, pairs, st.number_of_landmarks);
-    return true;
-  };
   for(std::size_t round = 0; round < st.local_rounds && !landmarks.empty(); ++round)
   {
-    if(round > 0 && !landmarks_from_map()) break;
+    if(round > 0)
+    {
+      // the sample nearest to the partner of each sample of the region
+      std::vector<std::size_t> image(ns, Mirror_matcher::none);
+      for(std::size_t s = 0; s < ns; ++s)
+      {
+        const std::size_t i = slot[D.sources()[s]];
+        if(i == Mirror_matcher::none || best[i] == Mirror_matcher::none) continue;
+        float nearest = std::numeric_limits<float>::infinity();
+        for(std::size_t t = 0; t < ns; ++t)
+          if(D(t, best[i]) < nearest) { nearest = D(t, best[i]); image[s] = t; }
+      }
+      std::vector<std::pair<std::size_t, std::size_t>> pairs;
+      for(std::size_t s = 0; s < ns; ++s)
+        if(image[s] != Mirror_matcher::none && image[s] >= s && image[image[s]] == s) pairs.emplace_back(s, image[s]);
+      if(pairs.size() < landmarks.size()) break;
+      landmarks = spread_pairs(D, pairs, st.number_of_landmarks);
+    }
     const Mirror_matcher mm(D, landmarks);
     const double sigma = 3. * std::sqrt(region_area / double(2 * mm.number_of_landmarks()));
     local_best_partners<ConcurrencyTag>(mm, verts, verts, sigma, best, residual);

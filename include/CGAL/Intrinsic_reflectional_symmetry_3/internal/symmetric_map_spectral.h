@@ -49,8 +49,9 @@
 // et al. 2010; column CR0% is the same run without this step): FAUST 99.08
 // -> 99.73 %, its posed shapes 98.35 -> 99.49 % (tr_reg_002 96.4 -> 99.9 %),
 // SCAPE 63.3 -> 65.0 %, with the side rule of symmetric_map_dense.h; on
-// FAUST (5K vertices) the step costs about 1.5 s on two cores. Every vertex of the region is compared with every other at
-// the last size, so the cost grows as the square of the region's size.
+// FAUST (5K vertices) the step costs about 1.5 s on two cores. Every vertex
+// of the region is compared with every other at the last size, so the cost
+// grows as the square of the region's size.
 
 namespace CGAL {
 namespace Intrinsic_reflectional_symmetry_3 {

@@ -482,7 +482,8 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   for(const IRS::Irsa_curve& c : curves)
     curve_list.push(irsym::Json::object().add("vertices", c.vertices().size()).add("pieces", c.polylines.size())
                       .add("nu", c.nu).add("largest_support", c.maximum_support())
-                      .add("refinement_iterations", c.number_of_iterations).add("converged", c.converged));
+                      .add("refinement_iterations", c.number_of_iterations).add("converged", c.converged)
+                      .add("nested", c.nested));
   res.add("curve_details", curve_list);
   report.add("results", res);
   if(repair) report.add("repair", *repair);

@@ -29,16 +29,22 @@
 //
 // usage: segmentation_benchmark [DATA_DIR] [--only ID] [--samples N] [--write DIR] [--threads T]
 //                               [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A]
-//                               [--merge-uncovered] [--nested]
+//                               [--merge-uncovered] [--nested] [--sdf-range K]
 //   DATA_DIR  default ../shared/data (relative to the current directory); psb/ inside it
 //   ID        only this model id (may be repeated)
 //   N         samples per model (default 1000)
 //   DIR       write DIR/<method>/<id>.seg (one label per face), the input of
-//             ../shared/tools/rand_index.py
+//             ../shared/tools/rand_index.py; also the inputs of the merge:
+//             DIR/regions/<id>.seg (symmetric region per face, -1 for none),
+//             DIR/parts/<id>.seg (over-segmentation part per face),
+//             DIR/regions/<id>.sdf (SDF value per face), DIR/regions/<id>.curves
+//             (one curve per line: its vertex ids)
 //   T         worker threads (default 1: the benchmark machine is shared)
 //   C, R      maximum_number_of_curves and stopping_ratio of the curve extraction (package defaults otherwise)
 //   P         parts of the over-segmentation (default 20); A: minimum_segment_area (default 0.01)
 //   --nested  nested_symmetries(true) in the curve extraction
+//   --sdf-range K  with --write DIR: only CGAL's SDF segmentation of every model with n = 1..K
+//             segments, as DIR/sdf_range/<id>.<n>.seg (to compare offline studies at any n)
 //   --merge-uncovered  merge_uncovered_parts(true) for ours, ours+axis and pure: faces no region
 //             covers join a neighbouring segment, so the number of segments is the number of curves
 
@@ -108,6 +114,7 @@ struct Options
   std::size_t samples = 1000, max_curves = 0, parts = IRS::default_number_of_over_segmentation_parts;
   double stopping_ratio = -1., minimum_area = IRS::default_minimum_segment_area;
   int threads = 1;
+  std::size_t sdf_range = 0;
   bool merge_uncovered = false;
   bool nested = false;
 };
@@ -213,6 +220,17 @@ bool run_model(const Options& o, const std::string& id, const std::string& categ
   std::sort(counts.begin(), counts.end());
   r.human_median = counts[counts.size() / 2];
 
+  if(o.sdf_range > 0)
+  {
+    // only CGAL's SDF segmentation with 1..K segments, for offline studies
+    const std::vector<double> sdf = IRS::internal::segmentation_sdf_values(
+      m, get(CGAL::vertex_point, m), CGAL::get_initialized_face_index_map(m), K(), 2. / 3. * CGAL_PI, 25);
+    for(std::size_t n = 1; n <= o.sdf_range; ++n)
+      write_seg(o, "sdf_range", id + "." + std::to_string(n), sdf_segmentation(m, sdf, n));
+    std::cout << id << ": SDF segmentations with 1.." << o.sdf_range << " segments written" << std::endl;
+    return false;
+  }
+
   CGAL::Real_timer t;
   t.start();
   const std::size_t ns = (std::min)(o.samples, std::size_t(num_vertices(m)));
@@ -278,6 +296,24 @@ bool run_model(const Options& o, const std::string& id, const std::string& categ
     for(std::size_t j = i + 1; j < humans.size(); ++j) { s += rand_index_error(humans[i], humans[j]); ++pairs; }
   r.error[5] = pairs ? s / double(pairs) : 0.;
   write_seg(o, "human", id, humans.front());
+  // the inputs of the merge, to study other merging rules offline: the
+  // symmetric region and the over-segmentation part of every face, the SDF
+  // value of every face, and the curves (one per line, vertex ids)
+  write_seg(o, "regions", id, region);
+  write_seg(o, "parts", id, part);
+  if(!o.write.empty())
+  {
+    std::ofstream sdf_out(fs::path(o.write) / "regions" / (id + ".sdf"));
+    sdf_out << std::setprecision(9);
+    for(double x : sdf) sdf_out << x << '\n';
+    std::ofstream curves_out(fs::path(o.write) / "regions" / (id + ".curves"));
+    for(const IRS::Irsa_curve& c : curves)
+    {
+      for(const auto& pl : c.polylines)
+        for(std::size_t v : pl) curves_out << v << ' ';
+      curves_out << '\n';
+    }
+  }
   r.segments[5] = r.human_median;
   return true;
 }
@@ -298,6 +334,7 @@ int main(int argc, char** argv)
     else if(a == "--only") o.only.push_back(value());
     else if(a == "--write") o.write = value();
     else if(a == "--threads") o.threads = std::atoi(value().c_str());
+    else if(a == "--sdf-range") o.sdf_range = std::size_t(std::max(1L, std::atol(value().c_str())));
     else if(a == "--max-curves") o.max_curves = std::size_t(std::max(1L, std::atol(value().c_str())));
     else if(a == "--stopping-ratio") o.stopping_ratio = std::atof(value().c_str());
     else if(a == "--parts") o.parts = std::size_t(std::max(1L, std::atol(value().c_str())));
@@ -307,7 +344,7 @@ int main(int argc, char** argv)
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: segmentation_benchmark [DATA_DIR] [--only ID] [--samples N] [--write DIR] [--threads T]\n"
-                   "                              [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A] [--merge-uncovered] [--nested]\n";
+                   "                              [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A] [--merge-uncovered] [--nested] [--sdf-range K]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }
@@ -318,6 +355,11 @@ int main(int argc, char** argv)
   if(o.threads > 0)
     control = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
 #endif
+  if(o.sdf_range > 0 && o.write.empty())
+  {
+    std::cerr << "--sdf-range writes its segmentations: it needs --write DIR\n";
+    return 1;
+  }
   const fs::path manifest = fs::path(o.data) / "psb" / "MANIFEST.tsv";
   std::cout << "segmentation benchmark: PSB subset in " << (fs::path(o.data) / "psb") << ", " << o.samples
             << " samples per model; Rand-index error (1 - RI, mean over the human segmentations); n = number of "

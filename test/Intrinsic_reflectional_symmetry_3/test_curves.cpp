@@ -581,16 +581,25 @@ TEST(Curves, TwoSnowmenGiveOneCurveAndOneRegionPerSnowman)
 
 // ---------------------------------------------------------------- spectral refinement
 
-TEST(Curves, SpectralNearestRowsEqualTheLiteralMinimum)
+// n random rows P of k coordinates in [-1, 1], and a random orthogonal C (k x k)
+void random_rows_and_rotation(CGAL::Random& rng, Eigen::Index n, Eigen::Index k, Eigen::MatrixXd& P,
+                              Eigen::MatrixXd& C)
 {
-  CGAL::Random rng(5);
-  const Eigen::Index n = 700, k = 40;
-  Eigen::MatrixXd P(n, k), R(k, k);
+  Eigen::MatrixXd R(k, k);
+  P.resize(n, k);
   for(Eigen::Index i = 0; i < n; ++i)
     for(Eigen::Index j = 0; j < k; ++j) P(i, j) = rng.get_double(-1., 1.);
   for(Eigen::Index i = 0; i < k; ++i)
     for(Eigen::Index j = 0; j < k; ++j) R(i, j) = rng.get_double(-1., 1.);
-  const Eigen::MatrixXd C = Eigen::HouseholderQR<Eigen::MatrixXd>(R).householderQ(); // orthogonal
+  C = Eigen::HouseholderQR<Eigen::MatrixXd>(R).householderQ();
+}
+
+TEST(Curves, SpectralNearestRowsEqualTheLiteralMinimum)
+{
+  CGAL::Random rng(5);
+  const Eigen::Index n = 700, k = 40;
+  Eigen::MatrixXd P, C;
+  random_rows_and_rotation(rng, n, k, P, C);
   std::vector<std::size_t> query;
   for(std::size_t r = 0; r < std::size_t(n); r += 3) query.push_back(r);
   const std::size_t untouched = std::size_t(-2);
@@ -621,12 +630,8 @@ TEST(Curves, SpectralNearestRowsStayOffTheirOwnSide)
 {
   CGAL::Random rng(6);
   const Eigen::Index n = 500, k = 30;
-  Eigen::MatrixXd P(n, k), R(k, k);
-  for(Eigen::Index i = 0; i < n; ++i)
-    for(Eigen::Index j = 0; j < k; ++j) P(i, j) = rng.get_double(-1., 1.);
-  for(Eigen::Index i = 0; i < k; ++i)
-    for(Eigen::Index j = 0; j < k; ++j) R(i, j) = rng.get_double(-1., 1.);
-  const Eigen::MatrixXd C = Eigen::HouseholderQR<Eigen::MatrixXd>(R).householderQ();
+  Eigen::MatrixXd P, C;
+  random_rows_and_rotation(rng, n, k, P, C);
   std::vector<signed char> side(static_cast<std::size_t>(n));
   for(signed char& s : side) s = static_cast<signed char>(rng.get_int(-1, 2));
   std::vector<std::size_t> query(static_cast<std::size_t>(n));

@@ -166,6 +166,13 @@ void write_seg(const Options& o, const std::string& method, const std::string& i
 }
 
 // CGAL's SDF segmentation (package's graph cut) with exactly n segments where possible
+// CGAL's post-processed SDF value of every face (its default cone and rays)
+std::vector<double> sdf_values(const Mesh& m)
+{
+  return IRS::internal::segmentation_sdf_values(m, get(CGAL::vertex_point, m), CGAL::get_initialized_face_index_map(m),
+                                                K(), 2. / 3. * CGAL_PI, 25);
+}
+
 Labels sdf_segmentation(const Mesh& m, const std::vector<double>& sdf, std::size_t n)
 {
   const auto vpm = get(CGAL::vertex_point, m);
@@ -223,8 +230,7 @@ bool run_model(const Options& o, const std::string& id, const std::string& categ
   if(o.sdf_range > 0)
   {
     // only CGAL's SDF segmentation with 1..K segments, for offline studies
-    const std::vector<double> sdf = IRS::internal::segmentation_sdf_values(
-      m, get(CGAL::vertex_point, m), CGAL::get_initialized_face_index_map(m), K(), 2. / 3. * CGAL_PI, 25);
+    const std::vector<double> sdf = sdf_values(m);
     for(std::size_t n = 1; n <= o.sdf_range; ++n)
       write_seg(o, "sdf_range", id + "." + std::to_string(n), sdf_segmentation(m, sdf, n));
     std::cout << id << ": SDF segmentations with 1.." << o.sdf_range << " segments written" << std::endl;
@@ -261,8 +267,7 @@ bool run_model(const Options& o, const std::string& id, const std::string& categ
   // the SDF values and the over-segmentation are computed once for all methods
   CGAL::Real_timer t_sdf;
   t_sdf.start();
-  const std::vector<double> sdf = IRS::internal::segmentation_sdf_values(
-    m, get(CGAL::vertex_point, m), CGAL::get_initialized_face_index_map(m), K(), 2. / 3. * CGAL_PI, 25);
+  const std::vector<double> sdf = sdf_values(m);
   const double seconds_sdf_values = t_sdf.time();
   IRS::symmetric_regions(m, D, curves, fmap(region));
   r.parts = IRS::Sdf_over_segmenter(o.parts).from_sdf_values(m, get(CGAL::vertex_point, m), sdf, fmap(part));

@@ -198,21 +198,24 @@ public:
                  const std::vector<std::pair<std::size_t, std::size_t>>& gt, double sqrt_area)
     : scale_(1. / sqrt_area)
   {
-    if(gt.empty()) return;
-    std::vector<float> nearest(n, std::numeric_limits<float>::infinity()), d(n);
-    std::size_t next = 0; // index into gt
-    for(std::size_t k = 0; k < (std::min)(number_of_landmark_pairs, gt.size()); ++k)
+    const std::size_t pairs = (std::min)(number_of_landmark_pairs, gt.size());
+    std::vector<float> nearest(n, std::numeric_limits<float>::infinity());
+    std::size_t next = 0; // index into gt: the first pair, then the one farthest from those taken
+    for(std::size_t k = 0; k < pairs; ++k)
     {
+      if(k > 0)
+      {
+        const std::vector<float>& last = rows_[rows_.size() - 2]; // from the last landmark l
+        for(std::size_t v = 0; v < n; ++v) nearest[v] = (std::min)(nearest[v], last[v]);
+        float far = -1.f;
+        for(std::size_t i = 0; i < gt.size(); ++i)
+          if(nearest[gt[i].first] > far) { far = nearest[gt[i].first]; next = i; }
+      }
       for(std::size_t end = 0; end < 2; ++end)
       {
         rows_.emplace_back(n);
         dijkstra.distances_from(end ? gt[next].second : gt[next].first, rows_.back().data());
       }
-      const std::vector<float>& row = rows_[rows_.size() - 2];
-      for(std::size_t v = 0; v < n; ++v) nearest[v] = (std::min)(nearest[v], row[v]);
-      float far = -1.f;
-      for(std::size_t i = 0; i < gt.size(); ++i)
-        if(nearest[gt[i].first] > far) { far = nearest[gt[i].first]; next = i; }
     }
   }
   double distortion(std::size_t x, std::size_t y) const

@@ -68,6 +68,11 @@ usage: irsym MESH --out DIR [options]
   --target-vertices N  first remesh or decimate to about N vertices (default: keep the mesh)
   --remesh             reach --target-vertices by isotropic remeshing (default: decimation
                        when reducing, remeshing when refining)
+  --max-voting-pairs N at most N of the similar sample pairs vote for boundaries, drawn at
+                       random with --seed (all of them still support); default: all. Where
+                       the SDF is nearly uniform (flat or machined parts) most sample pairs
+                       pass the similarity filter and the voting can take minutes; the
+                       tool then says so before voting
   --nested-symmetries  also extract the axes of smaller parts (limbs) below the paper's
                        selection (extract_irsa_curves' nested_symmetries): more curves,
                        regions and segments
@@ -108,7 +113,7 @@ struct Options
   std::optional<long long> samples;
   unsigned seed = 0;
   int threads = 0;
-  long long target_vertices = 0;
+  long long target_vertices = 0, max_voting_pairs = 0; // 0: no cap
   bool remesh = false, repair = false, nested = false;
   std::string up = "+Z";
 };
@@ -143,6 +148,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--seed") o.seed = unsigned(parse_integer(a, value(), 0));
     else if(a == "--threads") o.threads = int(parse_integer(a, value(), 1));
     else if(a == "--target-vertices") o.target_vertices = parse_integer(a, value(), 4);
+    else if(a == "--max-voting-pairs") o.max_voting_pairs = parse_integer(a, value(), 1);
     else if(a == "--remesh") o.remesh = true;
     else if(a == "--repair") o.repair = true;
     else if(a == "--nested-symmetries") o.nested = true;
@@ -385,10 +391,24 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   log.stop();
 
   log.start("IRSA transform (voting)");
+  // the voting's cost grows with its pairs times the similar pairs: a hint
+  // where that many is unusual (PSB's table 156 at 1,000 samples: 159,402
+  // similar pairs, 22 s on two cores; typical meshes: a few thousand)
+  const std::size_t many_similar_pairs = 100000;
+  if(opt.max_voting_pairs == 0 && similar.size() > many_similar_pairs)
+    std::cerr << "[irsym] " << similar.size() << " of " << samples.size() * (samples.size() - 1) / 2
+              << " sample pairs pass the similarity filter (a nearly uniform SDF): the voting may take minutes;"
+                 " --max-voting-pairs N lets only N of them vote\n";
   std::vector<double> tau(num_vertices(work), 0.);
-  const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(
-    work, D, similar, boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
-    IRS::parameters::random_seed(opt.seed));
+  const IRS::Irsa_voting_result voting =
+    opt.max_voting_pairs > 0
+      ? IRS::compute_irsa_transform(work, D, similar,
+                                    boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
+                                    IRS::parameters::random_seed(opt.seed)
+                                      .maximum_number_of_voting_pairs(std::size_t(opt.max_voting_pairs)))
+      : IRS::compute_irsa_transform(work, D, similar,
+                                    boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
+                                    IRS::parameters::random_seed(opt.seed));
   log.stop();
 
   log.start("IRSA curves");
@@ -527,7 +547,9 @@ int main(int argc, char** argv)
           .add("samples", opt.samples ? double(*opt.samples) : std::numeric_limits<double>::quiet_NaN())
           .add("seed", opt.seed).add("geodesics", opt.geodesics).add("threads", threads)
           .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh).add("up", opt.up)
-          .add("repair", opt.repair).add("nested_symmetries", opt.nested);
+          .add("repair", opt.repair).add("nested_symmetries", opt.nested)
+          .add("max_voting_pairs", opt.max_voting_pairs > 0 ? double(opt.max_voting_pairs)
+                                                            : std::numeric_limits<double>::quiet_NaN());
     report.add("parameters", params);
 
     int rc = 0;

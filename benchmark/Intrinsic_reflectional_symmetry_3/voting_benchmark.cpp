@@ -15,6 +15,8 @@
 //   --threads N           threads of the parallel stages (default: all)
 //   --reference-samples N samples of the fast-vs-reference run (default 300; 0: skip)
 //   --reference-eps a,b   similarity thresholds of that run (default 0.025,0.05,0.1,0.2)
+//   --cap-samples N       samples of the voting-pair cap study on each mesh (default 1000; 0: skip):
+//                         tau with 1/2 .. 1/16 of the similar pairs voting, against all of them
 //   --no-scaling          skip the scaling study (e.g. to run only fast vs reference)
 //   --robustness          also run the noise and holes study (camel, and FAUST with --faust)
 //   --robustness-samples N  samples of that study (default 1000)
@@ -261,6 +263,78 @@ void versus_reference(const std::string& path, std::size_t n, const std::vector<
   std::cout << stages.str();
   std::cout << "\n(mesh, D) index built once for the shared-index column: " << std::fixed << std::setprecision(4)
             << t_index << " s\n";
+}
+
+// ---------------------------------------------------------------- voting-pair cap
+
+double relative_l2(const std::vector<double>& tau, const std::vector<double>& tau2,
+                   const std::vector<std::ptrdiff_t>& map);
+
+// What `maximum_number_of_voting_pairs` does to tau: only that many of the
+// similar pairs, drawn with the seed, vote for boundaries (all of them still
+// support); measured against the uncapped transform on the same samples.
+// tau sums the votes, so a cap scales it down by about the share of pairs
+// that vote: the difference is taken after scaling the capped tau by
+// (similar pairs / voting pairs), the estimate of the uncapped sum. Columns:
+// that relative L2 difference, and the share of the 5 % of vertices with the
+// largest tau that stay among the 5 % largest (the ridges).
+void cap_study(const std::string& path, std::size_t n)
+{
+  Mesh m;
+  if(!CGAL::IO::read_polygon_mesh(path, m) || is_empty(m)) { std::cout << "cannot read " << path << "\n"; return; }
+  n = (std::min)(n, std::size_t(num_vertices(m)));
+  IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
+  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const Pairs pairs = similar_pairs(m, D, IRS::vertex_sdf_values(m), IRS::vertex_areas(m));
+  auto run = [&](std::size_t cap, unsigned seed, double& seconds) {
+    auto tau = get(CGAL::dynamic_vertex_property_t<double>(), m);
+    CGAL::Real_timer t;
+    t.start();
+    if(cap == 0) IRS::compute_irsa_transform(m, D, pairs, tau);
+    else IRS::compute_irsa_transform(m, D, pairs, tau,
+                                     IRS::parameters::maximum_number_of_voting_pairs(cap).random_seed(seed));
+    seconds = t.time();
+    std::vector<double> out(num_vertices(m));
+    for(auto v : m.vertices()) out[v.idx()] = get(tau, v);
+    return out;
+  };
+  auto top = [](const std::vector<double>& tau) {
+    std::vector<std::size_t> order(tau.size());
+    for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    const std::size_t k = (std::max)(std::size_t(1), tau.size() / 20);
+    std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(k), order.end(),
+                      [&](std::size_t a, std::size_t b) { return tau[a] > tau[b] || (tau[a] == tau[b] && a < b); });
+    std::vector<char> in(tau.size(), 0);
+    for(std::size_t i = 0; i < k; ++i) in[order[i]] = 1;
+    return in;
+  };
+  double t_full = 0.;
+  const std::vector<double> full = run(0, 0u, t_full);
+  const std::vector<char> full_top = top(full);
+  std::vector<std::ptrdiff_t> identity(full.size());
+  for(std::size_t v = 0; v < identity.size(); ++v) identity[v] = std::ptrdiff_t(v);
+  std::cout << "\n## Voting-pair cap (`maximum_number_of_voting_pairs`): " << path << ", " << n << " samples, "
+            << pairs.size() << " similar pairs, uncapped voting " << t_full << " s\n\n"
+            << "| voting pairs | share | seed | voting s | speed-up | scaled tau: rel. L2 difference | top 5 % kept |\n"
+               "|---|---|---|---|---|---|---|\n";
+  for(std::size_t divisor : {2u, 4u, 8u, 16u})
+    for(unsigned seed : {1u, 2u})
+    {
+      const std::size_t cap = (std::max)(std::size_t(1), pairs.size() / divisor);
+      double t_cap = 0.;
+      std::vector<double> capped = run(cap, seed, t_cap);
+      for(double& x : capped) x *= double(pairs.size()) / double(cap);
+      const std::vector<char> capped_top = top(capped);
+      std::size_t kept = 0, k = 0;
+      for(std::size_t v = 0; v < full.size(); ++v) { k += full_top[v]; kept += (full_top[v] && capped_top[v]); }
+      std::cout << "| " << cap << " | 1/" << divisor << " | " << seed << " | " << std::setprecision(3) << t_cap
+                << " | " << std::setprecision(2) << t_full / t_cap << "x | " << std::setprecision(3)
+                << relative_l2(full, capped, identity) << " | " << std::setprecision(3)
+                << 100. * double(kept) / double(k) << " % |\n";
+    }
+  std::cout << std::setprecision(6);
 }
 
 // ---------------------------------------------------------------- robustness
@@ -547,7 +621,7 @@ int main(int argc, char** argv)
   std::size_t reference_samples = 300;
   int threads = 0;
   bool floor_study = false, robust = false, scaling_study = true;
-  std::size_t robustness_samples = 1000;
+  std::size_t robustness_samples = 1000, cap_samples = 1000;
   std::vector<double> reference_thresholds = {IRS::default_similarity_threshold, 0.05, 0.1, 0.2};
   std::string faust;
   for(int i = 1; i < argc; ++i)
@@ -564,6 +638,7 @@ int main(int argc, char** argv)
     else if(a == "--reference-eps" && i + 1 < argc)
     { reference_thresholds.clear(); for(auto& x : split(argv[++i])) reference_thresholds.push_back(std::stod(x)); }
     else if(a == "--faust" && i + 1 < argc) faust = argv[++i];
+    else if(a == "--cap-samples" && i + 1 < argc) cap_samples = std::stoul(argv[++i]);
     else dirs.push_back(a);
   }
 #ifdef CGAL_LINKED_WITH_TBB
@@ -584,6 +659,11 @@ int main(int argc, char** argv)
     // O(voting pairs x (V / 16 + similar pairs + E K) + similar pairs x |beta|)
     if(find_file(dirs, meshes.front(), camel))
       versus_reference(camel, reference_samples, reference_thresholds);
+  }
+  for(const std::string& name : meshes)
+  {
+    std::string path;
+    if(cap_samples > 0 && find_file(dirs, name, path)) cap_study(path, cap_samples);
   }
   for(const std::string& name : meshes)
   {

@@ -35,6 +35,7 @@
 #include <iomanip>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -400,15 +401,11 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
               << " sample pairs pass the similarity filter (a nearly uniform SDF): the voting may take minutes;"
                  " --max-voting-pairs N lets only N of them vote\n";
   std::vector<double> tau(num_vertices(work), 0.);
-  const IRS::Irsa_voting_result voting =
-    opt.max_voting_pairs > 0
-      ? IRS::compute_irsa_transform(work, D, similar,
-                                    boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
-                                    IRS::parameters::random_seed(opt.seed)
-                                      .maximum_number_of_voting_pairs(std::size_t(opt.max_voting_pairs)))
-      : IRS::compute_irsa_transform(work, D, similar,
-                                    boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
-                                    IRS::parameters::random_seed(opt.seed));
+  const std::size_t cap = opt.max_voting_pairs > 0 ? std::size_t(opt.max_voting_pairs)
+                                                   : std::numeric_limits<std::size_t>::max(); // the default: no cap
+  const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(
+    work, D, similar, boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
+    IRS::parameters::random_seed(opt.seed).maximum_number_of_voting_pairs(cap));
   log.stop();
 
   log.start("IRSA curves");

@@ -265,78 +265,6 @@ void versus_reference(const std::string& path, std::size_t n, const std::vector<
             << t_index << " s\n";
 }
 
-// ---------------------------------------------------------------- voting-pair cap
-
-double relative_l2(const std::vector<double>& tau, const std::vector<double>& tau2,
-                   const std::vector<std::ptrdiff_t>& map);
-
-// What `maximum_number_of_voting_pairs` does to tau: only that many of the
-// similar pairs, drawn with the seed, vote for boundaries (all of them still
-// support); measured against the uncapped transform on the same samples.
-// tau sums the votes, so a cap scales it down by about the share of pairs
-// that vote: the difference is taken after scaling the capped tau by
-// (similar pairs / voting pairs), the estimate of the uncapped sum. Columns:
-// that relative L2 difference, and the share of the 5 % of vertices with the
-// largest tau that stay among the 5 % largest (the ridges).
-void cap_study(const std::string& path, std::size_t n)
-{
-  Mesh m;
-  if(!CGAL::IO::read_polygon_mesh(path, m) || is_empty(m)) { std::cout << "cannot read " << path << "\n"; return; }
-  n = (std::min)(n, std::size_t(num_vertices(m)));
-  IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
-  const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
-  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
-  const Pairs pairs = similar_pairs(m, D, IRS::vertex_sdf_values(m), IRS::vertex_areas(m));
-  auto run = [&](std::size_t cap, unsigned seed, double& seconds) {
-    auto tau = get(CGAL::dynamic_vertex_property_t<double>(), m);
-    CGAL::Real_timer t;
-    t.start();
-    if(cap == 0) IRS::compute_irsa_transform(m, D, pairs, tau);
-    else IRS::compute_irsa_transform(m, D, pairs, tau,
-                                     IRS::parameters::maximum_number_of_voting_pairs(cap).random_seed(seed));
-    seconds = t.time();
-    std::vector<double> out(num_vertices(m));
-    for(auto v : m.vertices()) out[v.idx()] = get(tau, v);
-    return out;
-  };
-  auto top = [](const std::vector<double>& tau) {
-    std::vector<std::size_t> order(tau.size());
-    for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    const std::size_t k = (std::max)(std::size_t(1), tau.size() / 20);
-    std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(k), order.end(),
-                      [&](std::size_t a, std::size_t b) { return tau[a] > tau[b] || (tau[a] == tau[b] && a < b); });
-    std::vector<char> in(tau.size(), 0);
-    for(std::size_t i = 0; i < k; ++i) in[order[i]] = 1;
-    return in;
-  };
-  double t_full = 0.;
-  const std::vector<double> full = run(0, 0u, t_full);
-  const std::vector<char> full_top = top(full);
-  std::vector<std::ptrdiff_t> identity(full.size());
-  for(std::size_t v = 0; v < identity.size(); ++v) identity[v] = std::ptrdiff_t(v);
-  std::cout << "\n## Voting-pair cap (`maximum_number_of_voting_pairs`): " << path << ", " << n << " samples, "
-            << pairs.size() << " similar pairs, uncapped voting " << t_full << " s\n\n"
-            << "| voting pairs | share | seed | voting s | speed-up | scaled tau: rel. L2 difference | top 5 % kept |\n"
-               "|---|---|---|---|---|---|---|\n";
-  for(std::size_t divisor : {2u, 4u, 8u, 16u})
-    for(unsigned seed : {1u, 2u})
-    {
-      const std::size_t cap = (std::max)(std::size_t(1), pairs.size() / divisor);
-      double t_cap = 0.;
-      std::vector<double> capped = run(cap, seed, t_cap);
-      for(double& x : capped) x *= double(pairs.size()) / double(cap);
-      const std::vector<char> capped_top = top(capped);
-      std::size_t kept = 0, k = 0;
-      for(std::size_t v = 0; v < full.size(); ++v) { k += full_top[v]; kept += (full_top[v] && capped_top[v]); }
-      std::cout << "| " << cap << " | 1/" << divisor << " | " << seed << " | " << std::setprecision(3) << t_cap
-                << " | " << std::setprecision(2) << t_full / t_cap << "x | " << std::setprecision(3)
-                << relative_l2(full, capped, identity) << " | " << std::setprecision(3)
-                << 100. * double(kept) / double(k) << " % |\n";
-    }
-  std::cout << std::setprecision(6);
-}
-
 // ---------------------------------------------------------------- robustness
 
 // tau by vertex index for the given sample vertices: heat-method geodesics,
@@ -436,6 +364,73 @@ void robustness_study(const std::vector<std::string>& dirs, const std::string& f
     if(CGAL::IO::read_polygon_mesh(faust + "/tr_reg_000.off", m) && !is_empty(m))
       robustness("FAUST tr_reg_000", m, (std::min)(n, std::size_t(num_vertices(m)) / 4));
   }
+}
+
+// ---------------------------------------------------------------- voting-pair cap
+
+// What `maximum_number_of_voting_pairs` does to tau: only that many of the
+// similar pairs, drawn with the seed, vote for boundaries (all of them still
+// support); measured against the uncapped transform on the same samples.
+// tau sums the votes, so a cap scales it down by about the share of pairs
+// that vote: the difference is taken after scaling the capped tau by
+// (similar pairs / voting pairs), the estimate of the uncapped sum. Columns:
+// that relative L2 difference, and the share of the 5 % of vertices with the
+// largest tau that stay among the 5 % largest (the ridges).
+void cap_study(const std::string& path, std::size_t n)
+{
+  Mesh m;
+  if(!CGAL::IO::read_polygon_mesh(path, m) || is_empty(m)) { std::cout << "cannot read " << path << "\n"; return; }
+  n = (std::min)(n, std::size_t(num_vertices(m)));
+  IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
+  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const Pairs pairs = similar_pairs(m, D, IRS::vertex_sdf_values(m), IRS::vertex_areas(m));
+  auto run = [&](std::size_t cap, unsigned seed, double& seconds) {
+    auto tau = get(CGAL::dynamic_vertex_property_t<double>(), m);
+    CGAL::Real_timer t;
+    t.start();
+    IRS::compute_irsa_transform(m, D, pairs, tau, IRS::parameters::maximum_number_of_voting_pairs(cap).random_seed(seed));
+    seconds = t.time();
+    std::vector<double> out(num_vertices(m));
+    for(auto v : m.vertices()) out[v.idx()] = get(tau, v);
+    return out;
+  };
+  auto top = [](const std::vector<double>& tau) {
+    std::vector<std::size_t> order(tau.size());
+    for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    const std::size_t k = (std::max)(std::size_t(1), tau.size() / 20);
+    std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(k), order.end(),
+                      [&](std::size_t a, std::size_t b) { return tau[a] > tau[b] || (tau[a] == tau[b] && a < b); });
+    std::vector<char> in(tau.size(), 0);
+    for(std::size_t i = 0; i < k; ++i) in[order[i]] = 1;
+    return in;
+  };
+  double t_full = 0.;
+  const std::vector<double> full = run(std::numeric_limits<std::size_t>::max(), 0u, t_full); // no cap: the default
+  const std::vector<char> full_top = top(full);
+  std::vector<std::ptrdiff_t> identity(full.size());
+  for(std::size_t v = 0; v < identity.size(); ++v) identity[v] = std::ptrdiff_t(v);
+  std::cout << "\n## Voting-pair cap (`maximum_number_of_voting_pairs`): " << path << ", " << n << " samples, "
+            << pairs.size() << " similar pairs, uncapped voting " << t_full << " s\n\n"
+            << "| voting pairs | share | seed | voting s | speed-up | scaled tau: rel. L2 difference | top 5 % kept |\n"
+               "|---|---|---|---|---|---|---|\n";
+  for(std::size_t divisor : {2u, 4u, 8u, 16u})
+    for(unsigned seed : {1u, 2u})
+    {
+      const std::size_t cap = (std::max)(std::size_t(1), pairs.size() / divisor);
+      double t_cap = 0.;
+      std::vector<double> capped = run(cap, seed, t_cap);
+      for(double& x : capped) x *= double(pairs.size()) / double(cap);
+      const std::vector<char> capped_top = top(capped);
+      std::size_t kept = 0, k = 0;
+      for(std::size_t v = 0; v < full.size(); ++v) { k += full_top[v]; kept += (full_top[v] && capped_top[v]); }
+      std::cout << "| " << cap << " | 1/" << divisor << " | " << seed << " | " << std::setprecision(3) << t_cap
+                << " | " << std::setprecision(2) << t_full / t_cap << "x | " << std::setprecision(3)
+                << relative_l2(full, capped, identity) << " | " << std::setprecision(3)
+                << 100. * double(kept) / double(k) << " % |\n";
+    }
+  std::cout << std::setprecision(6);
 }
 
 // ---------------------------------------------------------------- floor study

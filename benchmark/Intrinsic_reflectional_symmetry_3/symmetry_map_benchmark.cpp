@@ -35,11 +35,13 @@
 // protocol's figure.
 //
 // usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--similarity EPS_SIM]
-//                               [--write DIR] [--threads T] [--no-scape] [--no-faust]
+//                               [--seed S] [--write DIR] [--threads T] [--no-scape] [--no-faust]
 //   DATA_DIR  default ../shared/data (relative to the current directory);
 //             faust_5k/ and kim_bim_benchmark/ inside it, each skipped if absent
 //   N         samples per shape (default 1000)
 //   NAME      only the shapes whose name contains NAME
+//   S         seed of the farthest-point samples (default 0): the spread of the
+//             figures over seeds tells a real difference from a sampling accident
 //   DIR       write NAME.map (partner per vertex, -1 for none) and
 //             NAME.curves (one curve per line) there, the input formats of
 //             eval_symmetry.py (for SCAPE: of the mended mesh, written as NAME.off)
@@ -94,6 +96,7 @@ struct Options
   std::string data = "../shared/data";
   std::size_t samples = 1000;
   double similarity = -1.; // < 0: the package's default
+  unsigned seed = 0;
   std::string only, write;
   int threads = 0;
   bool faust = true, scape = true;
@@ -109,15 +112,17 @@ struct Pipeline_result
 };
 
 // the package's pipeline with its defaults; only the number of samples and the seed are set
-Pipeline_result run_pipeline(const Mesh& m, std::size_t number_of_samples, double similarity)
+Pipeline_result run_pipeline(const Mesh& m, const Options& o)
 {
+  const std::size_t number_of_samples = o.samples;
+  const double similarity = o.similarity;
   Pipeline_result r;
   CGAL::Real_timer total, t;
   total.start();
   t.start();
   const std::size_t ns = (std::min)(number_of_samples, std::size_t(num_vertices(m)));
   const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(0u));
+    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(o.seed));
   const IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
   const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
   r.seconds[0] = t.time(); t.reset();
@@ -408,7 +413,7 @@ void run_faust(const Options& o)
     for(std::size_t k = 0; k < x.size(); ++k)
       if(x[k] >= 1 && y[k] >= 1 && std::size_t(x[k]) <= num_vertices(m) && std::size_t(y[k]) <= num_vertices(m))
         gt.emplace_back(std::size_t(x[k] - 1), std::size_t(y[k] - 1)); // 1-based
-    const Pipeline_result r = run_pipeline(m, o.samples, o.similarity);
+    const Pipeline_result r = run_pipeline(m, o);
     const Metrics e = evaluate(m, gt, r);
     print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
     write_outputs(o, name, r);
@@ -486,7 +491,7 @@ void run_scape(const Options& o)
       if(to_mended[std::size_t(a)] < 0 || to_mended[std::size_t(b)] < 0) continue;
       gt.emplace_back(std::size_t(to_mended[std::size_t(a)]), std::size_t(to_mended[std::size_t(b)]));
     }
-    const Pipeline_result r = run_pipeline(m, o.samples, o.similarity);
+    const Pipeline_result r = run_pipeline(m, o);
     const Metrics e = evaluate(m, gt, r);
     print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
     if(!o.write.empty())
@@ -518,6 +523,7 @@ int main(int argc, char** argv)
     if(a == "--samples") o.samples = std::size_t(std::max(1L, std::atol(value().c_str())));
     else if(a == "--only") o.only = value();
     else if(a == "--similarity") o.similarity = std::atof(value().c_str());
+    else if(a == "--seed") o.seed = unsigned(std::strtoul(value().c_str(), nullptr, 10));
     else if(a == "--write") o.write = value();
     else if(a == "--threads") o.threads = std::atoi(value().c_str());
     else if(a == "--no-scape") o.scape = false;
@@ -525,7 +531,7 @@ int main(int argc, char** argv)
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--write DIR] "
-                   "[--threads T] [--similarity EPS_SIM] [--no-scape] [--no-faust]\n";
+                   "[--threads T] [--similarity EPS_SIM] [--seed S] [--no-scape] [--no-faust]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }
@@ -537,7 +543,7 @@ int main(int argc, char** argv)
     control = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
 #endif
   std::cout << "symmetric map benchmark: data " << o.data << ", " << o.samples
-            << " samples per shape, package defaults otherwise; e = geodesic error / sqrt(area), CR = % e <= "
+            << " samples per shape (seed " << o.seed << "), package defaults otherwise; e = geodesic error / sqrt(area), CR = % e <= "
             << std::setprecision(4) << kim_threshold << " (unmapped = failure), axis = distance from the "
             << "ground-truth axis points to the top curve / sqrt(area); times in seconds (wall clock)\n";
   if(!fs::is_directory(o.data))

@@ -787,6 +787,63 @@ TEST(Curves, SpectralRefinementWithSidesMendsHandsMappedToThemselves)
   EXPECT_EQ(best, sequential); // the same at any thread count
 }
 
+TEST(Curves, LocalRoundsTakeFixedPointsOnTheAxisOnly)
+{
+  // the landmarks that the local rounds of the dense map take from a map of
+  // the stick figure whose outer arms go onto themselves, as the global match
+  // did on FAUST tr_reg_008 (seed 4): the pairs (s, s) on the arms say that
+  // the reflection fixes them, and the local match under them keeps the
+  // arms in place; taken only near the axis, they do not
+  const auto shape = IRS::generate_stick_figure<Mesh>(3000);
+  const std::vector<Point> pts = vertex_points(shape.mesh);
+  const IRS::Known_symmetry& s = shape.symmetries[0];
+  const IRS::internal::Curves_mesh m = IRS::internal::make_curves_mesh(shape.mesh, IRS::parameters::default_values());
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(shape.mesh, IRS::parameters::number_of_samples(600).random_seed(1u));
+  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(shape.mesh);
+  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  std::vector<std::size_t> verts(m.number_of_vertices), corrupted(m.number_of_vertices), axis;
+  std::iota(verts.begin(), verts.end(), std::size_t(0));
+  double area = 0.;
+  for(const auto& f : m.faces) area += IRS::internal::triangle_area(m, f);
+  for(std::size_t v = 0; v < verts.size(); ++v)
+  {
+    ASSERT_GE(s.mirror[v], 0);
+    corrupted[v] = std::abs(pts[v].x()) > 1.1 ? v : std::size_t(s.mirror[v]);
+    if(std::size_t(s.mirror[v]) == v) axis.push_back(v);
+  }
+  ASSERT_FALSE(axis.empty());
+  const double spacing = IRS::internal::mean_sample_spacing(D);
+  const std::vector<std::size_t>& slot = verts; // every vertex in the region, in order
+  auto far_fixed_points = [&](const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
+    std::size_t n = 0;
+    for(const auto& pq : pairs)
+      n += pq.first == pq.second && std::abs(pts[samples[pq.first]].x()) > 1.1;
+    return n;
+  };
+  const auto on_axis = IRS::internal::mutual_sample_pairs(D, slot, corrupted, axis, 2. * spacing);
+  const auto anywhere =
+    IRS::internal::mutual_sample_pairs(D, slot, corrupted, axis, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(far_fixed_points(on_axis), 0u);
+  EXPECT_GT(far_fixed_points(anywhere), 10u);
+
+  auto local_match = [&](const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
+    const IRS::internal::Mirror_matcher mm(D, IRS::internal::spread_pairs(D, pairs, 64));
+    std::vector<std::size_t> best = corrupted;
+    std::vector<double> residual(verts.size());
+    IRS::internal::local_best_partners<CGAL::Parallel_if_available_tag>(
+      mm, verts, verts, 3. * std::sqrt(area / double(2 * mm.number_of_landmarks())), best, residual);
+    return share_near_mirror(pts, s.mirror, best, 2. * shape.mean_edge_length);
+  };
+  const double before = share_near_mirror(pts, s.mirror, corrupted, 2. * shape.mean_edge_length);
+  const double with_rule = local_match(on_axis), without_rule = local_match(anywhere);
+  std::cout << "[ local rounds ] stick figure, outer arms mapped to themselves: " << 100. * before << " % -> "
+            << 100. * without_rule << " % under all mutual pairs, " << 100. * with_rule
+            << " % with fixed points near the axis only (within 2 edges of the true mirror)" << std::endl;
+  EXPECT_GE(with_rule, 0.95);
+  EXPECT_GT(with_rule, without_rule + 0.02);
+}
+
 TEST(Curves, BentCapsuleGivesItsIntrinsicAxis)
 {
   // the end-to-end symmetry of a bent capsule is intrinsic only: no plane

@@ -73,7 +73,9 @@ void symmetric_map_setup(const TriangleMesh& tm, const Geodesic_distance_matrix&
                          "distance_tolerance_floor must be finite and >= 0");
   const double spacing = mean_sample_spacing(D);
   const double unit = spacing > 0. ? spacing : m.mean_edge_length;
-  symmetry_settings(np, unit, floor_edges * m.mean_edge_length, rs.number_of_landmarks, rs.symmetry, rs.ignition);
+  symmetry_settings(np, unit, floor_edges * m.mean_edge_length, rs.number_of_landmarks, rs.symmetry, rs.ignition,
+                    default_region_symmetry_tolerance);
+  rs.sample_spacing = spacing;
   const double rounds = double(choose_parameter(get_parameter(np, inp::number_of_local_rounds), rs.local_rounds));
   check_voting_parameter(rounds >= 0. && rounds <= 100., "number_of_local_rounds must be in [0, 100]");
   rs.local_rounds = std::size_t(rounds);
@@ -139,9 +141,11 @@ Region_growing_result grow_symmetric_regions(const TriangleMesh& tm, const Geode
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{symmetry_tolerance}
 ///     \cgalParamDescription{the reflection holds at a vertex when the residual of its mirror partner is
-///       at most this factor times the distance tolerance below}
+///       at most this factor times the distance tolerance below; looser than the extraction's 1.0, which
+///       tells candidate symmetries apart, since here it only bounds a region already found (on a posed
+///       shape a whole limb can sit just above 1.0)}
 ///     \cgalParamType{double >= 0}
-///     \cgalParamDefault{1.0}
+///     \cgalParamDefault{1.5}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{distance_threshold}
 ///     \cgalParamDescription{eps_DIS, relative part of the distance tolerance (pass the voting's value)}
@@ -326,9 +330,11 @@ std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{symmetry_tolerance}
 ///     \cgalParamDescription{the reflection holds at a vertex when the residual of its mirror partner is
-///       at most this factor times the distance tolerance below}
+///       at most this factor times the distance tolerance below; looser than the extraction's 1.0, which
+///       tells candidate symmetries apart, since here it only bounds a region already found (on a posed
+///       shape a whole limb can sit just above 1.0)}
 ///     \cgalParamType{double >= 0}
-///     \cgalParamDefault{1.0}
+///     \cgalParamDefault{1.5}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{distance_threshold}
 ///     \cgalParamDescription{eps_DIS, relative part of the distance tolerance (pass the voting's value)}

@@ -55,6 +55,10 @@ struct Region_settings
   double side_violations = 0.05; // the side test applies if the map breaks it at most at this share
   Symmetry_tolerance symmetry;
   double ignition = 0.;
+  double sample_spacing = 0.; // mean_sample_spacing()
+  // a sample mapped to itself is a landmark of the local rounds only within
+  // this many sample spacings of the curve (dense_region_map())
+  double fixed_point_radius = 2.;
 };
 
 /// What the region growing needs of the final curves: each curve with its
@@ -174,6 +178,38 @@ inline std::vector<signed char> mirror_sides(const Geodesic_distance_matrix& D, 
   return side;
 }
 
+/// The mutual sample pairs of a vertex map `best` (of the vertices whose
+/// `slot` is set): each sample goes to the sample nearest to its image, and
+/// pairs of samples going to each other are kept, once each. A sample going
+/// to itself is kept only within `fixed_point_radius` of `curve_vertices`: a
+/// reflection fixes its axis alone (see dense_region_map()).
+inline std::vector<std::pair<std::size_t, std::size_t>>
+mutual_sample_pairs(const Geodesic_distance_matrix& D, const std::vector<std::size_t>& slot,
+                    const std::vector<std::size_t>& best, const std::vector<std::size_t>& curve_vertices,
+                    double fixed_point_radius)
+{
+  const std::size_t ns = D.number_of_sources();
+  std::vector<std::size_t> image(ns, Mirror_matcher::none);
+  for(std::size_t s = 0; s < ns; ++s)
+  {
+    const std::size_t i = slot[D.sources()[s]];
+    if(i == Mirror_matcher::none || best[i] == Mirror_matcher::none) continue;
+    float nearest = std::numeric_limits<float>::infinity();
+    for(std::size_t t = 0; t < ns; ++t)
+      if(D(t, best[i]) < nearest) { nearest = D(t, best[i]); image[s] = t; }
+  }
+  auto near_curve = [&](std::size_t s) {
+    float d = std::numeric_limits<float>::infinity();
+    for(std::size_t u : curve_vertices) d = (std::min)(d, D(s, u));
+    return double(d) <= fixed_point_radius;
+  };
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for(std::size_t s = 0; s < ns; ++s)
+    if(image[s] != Mirror_matcher::none && image[s] >= s && image[image[s]] == s && (image[s] != s || near_curve(s)))
+      pairs.emplace_back(s, image[s]);
+  return pairs;
+}
+
 /// Dense mirror map of one region: the best partner (curves_mirror.h) of
 /// every vertex of the region among the vertices of the region, refined under
 /// locally weighted landmarks, then spectrally (ZoomOut), made an involution
@@ -208,35 +244,27 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
   // round's map: the landmarks of the global match carry its distortion on
   // posed shapes. sigma: three times the spacing of the 2K landmark samples
   // were they spread evenly over the region. A sample mapped to itself gives
-  // a landmark pair (s, s), right on the axis and wrong elsewhere (it makes
-  // the vertices near it prefer themselves: FAUST tr_reg_002's head). All
-  // are kept: dropping those the global match does not map to themselves,
-  // or those around which the map keeps the orientation, mends tr_reg_002
-  // (96.4 -> 98.1 / 98.2 % CR) but costs tr_reg_008 (97.2 -> 96.4 / 96.7 %)
-  // and, the first rule, SCAPE (63.3 -> 61.7 %) (symmetry_map_benchmark).
-  // The spectral refinement after the rounds mends such patches instead
-  // (tr_reg_002 99.9 %, tr_reg_008 99.6 %).
+  // a landmark pair (s, s), right on the axis and wrong elsewhere: it makes
+  // the vertices near it prefer themselves, and a limb whose samples the
+  // global match keeps in place stays so. Such a pair is kept only within
+  // `fixed_point_radius` sample spacings of the curve (a reflection fixes
+  // its axis alone; the rule of the curves' parts, irsa_curves.h). On
+  // FAUST's tr_reg_008 with seed 4 the arms mapped onto themselves (76.7 %
+  // CR, with the whole body in the region); with the rule 99.5 %
+  // (symmetry_map_benchmark --seed 4). The spectral refinement after the
+  // rounds mends smaller such patches (tr_reg_002's head).
   double region_area = 0.;
   for(const auto& f : m.faces)
     if(in_region[f[0]] && in_region[f[1]] && in_region[f[2]]) region_area += triangle_area(m, f);
-  const std::size_t ns = D.number_of_sources();
+  std::vector<std::size_t> curve_vertices;
+  for(const auto& polyline : curve.polylines)
+    curve_vertices.insert(curve_vertices.end(), polyline.begin(), polyline.end());
   for(std::size_t round = 0; round < st.local_rounds && !landmarks.empty(); ++round)
   {
     if(round > 0)
     {
-      // the sample nearest to the partner of each sample of the region
-      std::vector<std::size_t> image(ns, Mirror_matcher::none);
-      for(std::size_t s = 0; s < ns; ++s)
-      {
-        const std::size_t i = slot[D.sources()[s]];
-        if(i == Mirror_matcher::none || best[i] == Mirror_matcher::none) continue;
-        float nearest = std::numeric_limits<float>::infinity();
-        for(std::size_t t = 0; t < ns; ++t)
-          if(D(t, best[i]) < nearest) { nearest = D(t, best[i]); image[s] = t; }
-      }
-      std::vector<std::pair<std::size_t, std::size_t>> pairs;
-      for(std::size_t s = 0; s < ns; ++s)
-        if(image[s] != Mirror_matcher::none && image[s] >= s && image[image[s]] == s) pairs.emplace_back(s, image[s]);
+      std::vector<std::pair<std::size_t, std::size_t>> pairs =
+        mutual_sample_pairs(D, slot, best, curve_vertices, st.fixed_point_radius * st.sample_spacing);
       if(pairs.size() < landmarks.size()) break;
       landmarks = spread_pairs(D, pairs, st.number_of_landmarks);
     }

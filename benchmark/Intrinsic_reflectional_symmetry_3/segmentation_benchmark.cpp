@@ -9,8 +9,10 @@
 // face pairs on which the two disagree), averaged over the humans, then per
 // category and overall (equal weight per model). Methods:
 //   ours   symmetry_aware_segmentation(): the symmetric regions of the IRSA
-//          curves merge the default over-segmentation (Sdf_over_segmenter,
-//          about 20 parts)
+//          curves merge the default over-segmentation (Sdf_over_segmenter:
+//          the common refinement of CGAL's SDF segmentations with 2..12
+//          clusters, at most 20 parts); a part joins the region covering at
+//          least 80 % of it (--coverage), else stays a segment
 //   ours+axis  the same with keep_off_axis_parts(true): only the parts the
 //          curve crosses merge into its region (the symmetric core), the
 //          others stay segments
@@ -29,7 +31,7 @@
 //
 // usage: segmentation_benchmark [DATA_DIR] [--only ID] [--samples N] [--write DIR] [--threads T]
 //                               [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A]
-//                               [--merge-uncovered] [--nested] [--sdf-range K]
+//                               [--merge-uncovered] [--nested] [--sdf-range K] [--coverage C]
 //   DATA_DIR  default ../shared/data (relative to the current directory); psb/ inside it
 //   ID        only this model id (may be repeated)
 //   N         samples per model (default 1000)
@@ -45,6 +47,7 @@
 //   --nested  nested_symmetries(true) in the curve extraction
 //   --sdf-range K  with --write DIR: only CGAL's SDF segmentation of every model with n = 1..K
 //             segments, as DIR/sdf_range/<id>.<n>.seg (to compare offline studies at any n)
+//   C         minimum_region_coverage of the merge (default 0.8; 0 is the paper's rule)
 //   --merge-uncovered  merge_uncovered_parts(true) for ours, ours+axis and pure: faces no region
 //             covers join a neighbouring segment, so the number of segments is the number of curves
 
@@ -112,7 +115,8 @@ struct Options
   std::string data = "../shared/data", write;
   std::vector<std::string> only;
   std::size_t samples = 1000, max_curves = 0, parts = IRS::default_number_of_over_segmentation_parts;
-  double stopping_ratio = -1., minimum_area = IRS::default_minimum_segment_area;
+  double stopping_ratio = -1., minimum_area = IRS::default_minimum_segment_area,
+         minimum_coverage = IRS::default_minimum_region_coverage;
   int threads = 1;
   std::size_t sdf_range = 0;
   bool merge_uncovered = false;
@@ -165,7 +169,6 @@ void write_seg(const Options& o, const std::string& method, const std::string& i
   for(long x : l) out << x << '\n';
 }
 
-// CGAL's SDF segmentation (package's graph cut) with exactly n segments where possible
 // CGAL's post-processed SDF value of every face (its default cone and rays)
 std::vector<double> sdf_values(const Mesh& m)
 {
@@ -173,16 +176,15 @@ std::vector<double> sdf_values(const Mesh& m)
                                                 K(), 2. / 3. * CGAL_PI, 25);
 }
 
+// CGAL's SDF segmentation (package's graph cut) with exactly n segments where possible
 Labels sdf_segmentation(const Mesh& m, const std::vector<double>& sdf, std::size_t n)
 {
-  const auto vpm = get(CGAL::vertex_point, m);
+  n = (std::max)(n, std::size_t(1));
+  Labels seg(num_faces(m));
   const auto fim = CGAL::get_initialized_face_index_map(m);
-  std::vector<std::size_t> seg;
-  std::size_t k = IRS::internal::sdf_graph_cut_segmentation(m, vpm, fim, K(), sdf, (std::max)(n, std::size_t(1)),
-                                                            0.26, seg);
-  const IRS::internal::Face_graph g = IRS::internal::make_face_graph(m, vpm, fim);
-  IRS::internal::merge_small_components(g, seg, k, 0., n);
-  return Labels(seg.begin(), seg.end());
+  IRS::Sdf_over_segmenter(n, n, n).from_sdf_values(m, get(CGAL::vertex_point, m), sdf,
+                                                    boost::make_iterator_property_map(seg.begin(), fim));
+  return seg;
 }
 
 struct Model_result
@@ -271,7 +273,8 @@ bool run_model(const Options& o, const std::string& id, const std::string& categ
   const double seconds_sdf_values = t_sdf.time();
   IRS::symmetric_regions(m, D, curves, fmap(region));
   r.parts = IRS::Sdf_over_segmenter(o.parts).from_sdf_values(m, get(CGAL::vertex_point, m), sdf, fmap(part));
-  const auto np = IRS::parameters::minimum_segment_area(o.minimum_area).merge_uncovered_parts(o.merge_uncovered);
+  const auto np = IRS::parameters::minimum_segment_area(o.minimum_area).merge_uncovered_parts(o.merge_uncovered)
+                    .minimum_region_coverage(o.minimum_coverage);
   r.segments[0] = IRS::merge_over_segmentation(m, fmap(region), fmap(part), fmap(ours), np);
   r.seconds_ours = t.time();
   r.segments[1] = IRS::symmetry_aware_segmentation(m, D, curves, fmap(ours_axis),
@@ -345,11 +348,12 @@ int main(int argc, char** argv)
     else if(a == "--parts") o.parts = std::size_t(std::max(1L, std::atol(value().c_str())));
     else if(a == "--min-area") o.minimum_area = std::atof(value().c_str());
     else if(a == "--merge-uncovered") o.merge_uncovered = true;
+    else if(a == "--coverage") o.minimum_coverage = std::atof(value().c_str());
     else if(a == "--nested") o.nested = true;
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: segmentation_benchmark [DATA_DIR] [--only ID] [--samples N] [--write DIR] [--threads T]\n"
-                   "                              [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A] [--merge-uncovered] [--nested] [--sdf-range K]\n";
+                   "                              [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A] [--merge-uncovered] [--nested] [--sdf-range K] [--coverage C]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }

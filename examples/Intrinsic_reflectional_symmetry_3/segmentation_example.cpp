@@ -94,7 +94,7 @@ int main(int argc, char** argv)
 
   // 3. CGAL's SDF segmentation alone, asked for as many segments
   auto sdf = mesh.add_property_map<face_descriptor, std::size_t>("f:sdf_segment", 0).first;
-  const std::size_t m = IRS::Sdf_over_segmenter(n)(mesh, get(CGAL::vertex_point, mesh), sdf);
+  const std::size_t m = IRS::Sdf_over_segmenter(n, n, n)(mesh, get(CGAL::vertex_point, mesh), sdf);
   print_segments("SDF segmentation", mesh, sdf, m);
 
   if(argc > 2) {

@@ -33,6 +33,10 @@
 
 #include <gtest/gtest.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include "test_support.h"
 
 #include <algorithm>
@@ -284,6 +288,41 @@ TEST(Segmentation, EveryFaceInOneConnectedSegment)
   }
 }
 
+TEST(Segmentation, PartStraddlingTwoRegionsStaysApart)
+{
+  // Two regions (x < 0, x >= 0) and three parts: the lower half (z < 0), which
+  // straddles both regions, and the two upper quarters, each in one region.
+  const auto shape = IRS::generate_ellipsoid<Mesh>(800);
+  const Mesh& m = shape.mesh;
+  Face_labels<Mesh> region(m), part(m);
+  for(auto f : faces(m))
+  {
+    const Point c = CGAL::centroid(m.point(target(halfedge(f, m), m)), m.point(target(next(halfedge(f, m), m), m)),
+                                   m.point(source(halfedge(f, m), m)));
+    region.values[f.idx()] = c.x() < 0. ? 0 : 1;
+    part.values[f.idx()] = c.z() < 0. ? 0 : (c.x() < 0. ? 1 : 2);
+  }
+  auto segments_of = [&](double coverage, Face_labels<Mesh>& seg) {
+    return IRS::merge_over_segmentation(m, region.map(m), part.map(m), seg.map(m),
+                                        IRS::parameters::minimum_region_coverage(coverage));
+  };
+  // default (0.8): the lower half is covered about half by each region: a segment of its own
+  Face_labels<Mesh> d(m), paper(m), loose(m);
+  EXPECT_EQ(IRS::merge_over_segmentation(m, region.map(m), part.map(m), d.map(m)), 3u);
+  std::map<long, long> of_part; // part -> its segment: one segment per part
+  for(auto f : faces(m))
+  {
+    const auto it = of_part.emplace(part.values[f.idx()], d.values[f.idx()]).first;
+    EXPECT_EQ(it->second, d.values[f.idx()]);
+  }
+  EXPECT_EQ(of_part.size(), 3u);
+  // the paper's rule (0), and any coverage below the larger share: the lower half joins a region
+  EXPECT_EQ(segments_of(0., paper), 2u);
+  EXPECT_EQ(segments_of(0.4, loose), 2u);
+  EXPECT_EQ(paper.values, loose.values);
+  expect_connected_cover(m, paper.values, 2, "paper's rule");
+}
+
 TEST(Segmentation, SameOnSurfaceMeshAndPolyhedron)
 {
   const auto shape = IRS::generate_snowman<Mesh>(1200);
@@ -355,15 +394,73 @@ TEST(Segmentation, GraphCutAppliesEveryExpansionMove)
                                                                          sp.map(sphere)),
                            "sphere");
   }
-  // the over-segmenter goes through the same cut
+  // the over-segmenter goes through the same cut (one run with 4 clusters)
   Face_labels<Mesh> parts(m);
-  EXPECT_GE(IRS::Sdf_over_segmenter(20, 4, 0.26)(m, vpm, parts.map(m)), 2u);
+  EXPECT_GE(IRS::Sdf_over_segmenter(20, 4, 4)(m, vpm, parts.map(m)), 2u);
   expect_connected_cover(m, parts.values,
                          std::size_t(*std::max_element(parts.values.begin(), parts.values.end()) + 1),
                          "over-segmentation");
 }
 
 // ---------------------------------------------------------------- errors
+
+TEST(Segmentation, OverSegmentationRefinesEverySdfRun)
+{
+  // The default over-segmentation is the common refinement of CGAL's SDF
+  // segmentations with 2..K clusters: every run is a merge of its parts, up
+  // to the slivers (pieces below 0.05 % of the area) merged into neighbours.
+  // On the two snowmen the runs cut different places (runs nest on the stick figure).
+  const auto shape = IRS::generate_two_snowmen<Mesh>(2000);
+  const Mesh& m = shape.mesh;
+  const auto vpm = get(CGAL::vertex_point, m);
+  const auto fim = CGAL::get_initialized_face_index_map(m);
+  const IRS::internal::Face_graph g = IRS::internal::make_face_graph(m, vpm, fim);
+  const std::vector<double> sdf = IRS::internal::segmentation_sdf_values(m, vpm, fim, K(), 2. / 3. * CGAL_PI, 25);
+  Face_labels<Mesh> parts(m);
+  const std::size_t np = IRS::Sdf_over_segmenter(1000, 2, 8).from_sdf_values(m, vpm, sdf, parts.map(m));
+  expect_connected_cover(m, parts.values, np, "refinement");
+  std::size_t largest_run = 0;
+  for(std::size_t k = 2; k <= 8; ++k)
+  {
+    std::vector<std::size_t> run;
+    std::size_t nr = IRS::internal::sdf_graph_cut_segmentation(m, vpm, fim, K(), sdf, k, 0.26, run);
+    nr = IRS::internal::merge_small_components(g, run, nr, 0., k);
+    largest_run = (std::max)(largest_run, nr);
+    // the area of each part in each segment of the run
+    std::vector<std::map<std::size_t, double>> share(np);
+    for(std::size_t f = 0; f < g.number_of_faces; ++f) share[std::size_t(parts.values[f])][run[f]] += g.area[f];
+    double astray = 0.; // area outside the run segment that holds most of its part
+    for(const auto& sh : share)
+    {
+      double total = 0., best = 0.;
+      for(const auto& sa : sh) { total += sa.second; best = (std::max)(best, sa.second); }
+      astray += total - best;
+    }
+    EXPECT_LT(astray, 0.005 * g.total_area) << k << " clusters";
+    // one run asked for alone is CGAL's SDF segmentation with that many segments
+    Face_labels<Mesh> single(m);
+    EXPECT_EQ(IRS::Sdf_over_segmenter(k, k, k).from_sdf_values(m, vpm, sdf, single.map(m)), nr);
+    EXPECT_TRUE(std::equal(run.begin(), run.end(), single.values.begin(),
+                           [](std::size_t a, long b) { return long(a) == b; }))
+      << k << " clusters";
+  }
+  std::cout << "[ two snowmen, runs with 2..8 clusters ] largest run " << largest_run << " segments, refinement "
+            << np << " parts" << std::endl;
+  EXPECT_GT(np, largest_run); // the runs' boundaries differ: the refinement has more parts than any run
+#ifdef CGAL_LINKED_WITH_TBB
+  { // the runs go in parallel: the same parts on one thread
+    tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+    Face_labels<Mesh> sequential(m);
+    EXPECT_EQ(IRS::Sdf_over_segmenter(1000, 2, 8).from_sdf_values(m, vpm, sdf, sequential.map(m)), np);
+    EXPECT_EQ(sequential.values, parts.values);
+  }
+#endif
+  // capped: at most the number of parts asked for
+  Face_labels<Mesh> capped(m);
+  const std::size_t nc = IRS::Sdf_over_segmenter(4, 2, 8).from_sdf_values(m, vpm, sdf, capped.map(m));
+  EXPECT_LE(nc, 4u);
+  expect_connected_cover(m, capped.values, nc, "capped refinement");
+}
 
 TEST(Segmentation, BadInputThrowsInputError)
 {
@@ -410,6 +507,14 @@ TEST(Segmentation, BadInputThrowsInputError)
                                                   IRS::parameters::minimum_segment_area(-0.5)); },
                  IRS::Input_problem::invalid_parameter, "negative minimum_segment_area");
   expect_problem([&] { IRS::Sdf_over_segmenter(0); }, IRS::Input_problem::invalid_parameter, "no part");
+  expect_problem([&] { IRS::Sdf_over_segmenter(20, 8, 4); }, IRS::Input_problem::invalid_parameter,
+                 "fewer clusters at most than at least");
+  expect_problem([&] { IRS::symmetry_aware_segmentation(shape.mesh, p.D, p.curves, seg.map(shape.mesh),
+                                                        IRS::parameters::minimum_region_coverage(1.5)); },
+                 IRS::Input_problem::invalid_parameter, "minimum_region_coverage above 1");
+  expect_problem([&] { IRS::merge_over_segmentation(quad, qregion.map(quad), qpart.map(quad), qseg.map(quad),
+                                                    IRS::parameters::minimum_region_coverage(-0.1)); },
+                 IRS::Input_problem::not_triangle_mesh, "quad mesh before a negative coverage");
   // an empty mesh
   Mesh empty;
   Face_labels<Mesh> eseg(empty);

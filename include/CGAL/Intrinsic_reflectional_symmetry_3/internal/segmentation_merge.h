@@ -39,31 +39,37 @@ inline std::size_t finish_segments(const Face_graph& g, const std::vector<long>&
 
 // Paper Sec. 4.1, merging: every connected part of the over-segmentation
 // goes to the region covering the largest area of it (ties: the smaller
-// region id); a part no region touches stays a segment of its own
-// (`merge_uncovered == false`) or joins its neighbours. Then
-// finish_segments().
+// region id), if that region covers at least `minimum_coverage` of the part;
+// a part no region covers so much of (it straddles regions, or none touches
+// it) stays a segment of its own (`merge_uncovered == false`) or joins its
+// neighbours. Then finish_segments().
 //
 // With `axis_faces` (by face: 1 where the face touches its region's curve),
 // only the parts the curve crosses (at least `minimum_axis_faces` such faces)
 // merge into their region's segment, the symmetric core; the other parts of
 // the region, the mirror halves of pairs of parts, stay segments of their own.
 inline std::size_t merge_parts(const Face_graph& g, const std::vector<long>& region, const std::vector<long>& part,
-                               double minimum_area, bool merge_uncovered, std::vector<std::size_t>& segment,
-                               const std::vector<char>* axis_faces = nullptr, std::size_t minimum_axis_faces = 3)
+                               double minimum_area, bool merge_uncovered, double minimum_coverage,
+                               std::vector<std::size_t>& segment, const std::vector<char>* axis_faces = nullptr,
+                               std::size_t minimum_axis_faces = 3)
 {
   std::vector<std::size_t> comp;
   const std::size_t nc = label_components(g, part, comp); // parts must be connected: split them
   long number_of_regions = 0;
   for(long r : region) number_of_regions = (std::max)(number_of_regions, r + 1);
   std::vector<std::map<long, double>> cover(nc);
+  std::vector<double> part_area(nc, 0.);
   for(std::size_t f = 0; f < g.number_of_faces; ++f)
+  {
+    part_area[comp[f]] += g.area[f];
     if(region[f] >= 0) cover[comp[f]][region[f]] += g.area[f];
+  }
   std::vector<long> assigned(nc, -1);
   for(std::size_t c = 0; c < nc; ++c)
   {
     double best = 0.;
     for(const auto& ra : cover[c]) // increasing region id: ties go to the smaller one
-      if(ra.second > best) { best = ra.second; assigned[c] = ra.first; }
+      if(ra.second > best && ra.second >= minimum_coverage * part_area[c]) { best = ra.second; assigned[c] = ra.first; }
   }
   if(axis_faces != nullptr)
   {

@@ -31,7 +31,7 @@
 //
 // usage: segmentation_benchmark [DATA_DIR] [--only ID] [--samples N] [--write DIR] [--threads T]
 //                               [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A]
-//                               [--merge-uncovered] [--nested] [--sdf-range K] [--coverage C]
+//                               [--merge-uncovered] [--nested] [--sdf-range K] [--coverage C] [--seed S]
 //   DATA_DIR  default ../shared/data (relative to the current directory); psb/ inside it
 //   ID        only this model id (may be repeated)
 //   N         samples per model (default 1000)
@@ -48,6 +48,7 @@
 //   --sdf-range K  with --write DIR: only CGAL's SDF segmentation of every model with n = 1..K
 //             segments, as DIR/sdf_range/<id>.<n>.seg (to compare offline studies at any n)
 //   C         minimum_region_coverage of the merge (default 0.8; 0 is the paper's rule)
+//   S         seed of the farthest-point samples (default 0)
 //   --merge-uncovered  merge_uncovered_parts(true) for ours, ours+axis and pure: faces no region
 //             covers join a neighbouring segment, so the number of segments is the number of curves
 
@@ -120,6 +121,7 @@ struct Options
   int threads = 1;
   std::size_t sdf_range = 0;
   bool merge_uncovered = false;
+  unsigned int seed = 0; // of the farthest-point samples
   bool nested = false;
 };
 
@@ -243,7 +245,7 @@ bool run_model(const Options& o, const std::string& id, const std::string& categ
   t.start();
   const std::size_t ns = (std::min)(o.samples, std::size_t(num_vertices(m)));
   const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(0u));
+    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(o.seed));
   const IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
   const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
   const IRS::Sdf_signatures signatures = IRS::sdf_signatures(IRS::vertex_sdf_values(m), IRS::vertex_areas(m), D);
@@ -349,11 +351,12 @@ int main(int argc, char** argv)
     else if(a == "--min-area") o.minimum_area = std::atof(value().c_str());
     else if(a == "--merge-uncovered") o.merge_uncovered = true;
     else if(a == "--coverage") o.minimum_coverage = std::atof(value().c_str());
+    else if(a == "--seed") o.seed = unsigned(std::atol(value().c_str()));
     else if(a == "--nested") o.nested = true;
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: segmentation_benchmark [DATA_DIR] [--only ID] [--samples N] [--write DIR] [--threads T]\n"
-                   "                              [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A] [--merge-uncovered] [--nested] [--sdf-range K] [--coverage C]\n";
+                   "                              [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A] [--merge-uncovered] [--nested] [--sdf-range K] [--coverage C] [--seed S]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }

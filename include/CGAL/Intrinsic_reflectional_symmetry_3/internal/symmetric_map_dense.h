@@ -279,8 +279,9 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
   // raised hands: 98.6 -> 99.5 % CR). Only where the map so far keeps the
   // sides apart: where it does not, the bisector is not the map's axis (SCAPE
   // meshes whose top curve follows another symmetry: 15-87 % of the vertices
-  // off the band map to their own side, and imposing the sides costs 65.2 ->
-  // 62.8 % CR; on FAUST it is 0-0.3 %). The residuals, which order the
+  // off the band map to their own side, and imposing the sides cost 65.2 ->
+  // 62.8 % CR, measured with the regions' former tolerance of 1.0; on FAUST
+  // it is 0-0.3 %). The residuals, which order the
   // involution below, under the last landmarks.
   if(st.eigenfunctions > 0 && !landmarks.empty())
   {

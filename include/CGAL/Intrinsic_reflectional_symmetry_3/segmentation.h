@@ -163,7 +163,7 @@ public:
 #endif
     // the common refinement: a piece is a connected set of faces that every
     // run puts in one segment
-    std::vector<std::size_t> piece(g.number_of_faces, 0), seg;
+    std::vector<std::size_t> piece(g.number_of_faces, 0);
     std::vector<std::uint64_t> both(g.number_of_faces);
     std::size_t n = 1;
     for(std::size_t r = 0; r < runs; ++r)
@@ -172,10 +172,9 @@ public:
         both[f] = std::uint64_t(piece[f]) * run_counts[r] + run_segments[r][f];
       n = internal::label_components(g, both, piece);
     }
-    seg.swap(piece);
     const double sliver = max_clusters_ > min_clusters_ ? minimum_piece_area * g.total_area : 0.;
-    n = internal::merge_small_components(g, seg, n, sliver, parts_);
-    for(auto f : faces(tm)) put(part, f, static_cast<Value>(seg[std::size_t(get(fim, f))]));
+    n = internal::merge_small_components(g, piece, n, sliver, parts_);
+    for(auto f : faces(tm)) put(part, f, static_cast<Value>(piece[std::size_t(get(fim, f))]));
     return n;
   }
 

@@ -96,6 +96,15 @@ list(GET counts 1 nf)
 check_symmetry_outputs(${WORK_DIR}/snowman ${nv} ${nf})
 run(0 ${WORK_DIR}/snowman/snowman.off --target-vertices 1200 --samples 200 --out ${WORK_DIR}/decimated)
 check_symmetry_outputs(${WORK_DIR}/decimated ${nv} ${nf})
+# a target above the vertex count is reached by remeshing, without --remesh
+math(EXPR refined_target "${nv} * 3 / 2")
+run(0 ${WORK_DIR}/snowman/snowman.off --target-vertices ${refined_target} --samples 200 --out ${WORK_DIR}/refined)
+check_symmetry_outputs(${WORK_DIR}/refined ${nv} ${nf})
+file(READ ${WORK_DIR}/refined/report.json refined_report)
+string(JSON working ERROR_VARIABLE jerr GET "${refined_report}" results working_vertices)
+if(jerr OR working LESS_EQUAL nv)
+  message(FATAL_ERROR "--target-vertices ${refined_target} on ${nv} vertices: ${working} working vertices ${jerr}")
+endif()
 
 # without --repair: no repair output
 string(JSON ignored ERROR_VARIABLE jerr GET "${report}" repair)

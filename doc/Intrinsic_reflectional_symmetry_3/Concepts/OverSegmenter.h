@@ -6,7 +6,7 @@ An over-segmenter is the black-box mesh segmentation whose parts the
 symmetric (PIRS) regions merge in `symmetry_aware_segmentation()` (paper
 Sec. 4.1: over-segment the model into about 20 parts, then give each part to
 the region that covers the largest area of it; by default only where that
-region covers most of the part, see `minimum_region_coverage`). It splits the faces of a
+region covers at least 80 % of the part, see `minimum_region_coverage`). It splits the faces of a
 triangle mesh into parts, typically along concave creases (minima rule), in
 more parts than the final segmentation has.
 

@@ -219,7 +219,8 @@ Part_repair_report repair_missing_parts(const TriangleMesh& tm, const Irsa_curve
 /// Part repair from all the IRSA curves of a shape: the curves are tried in
 /// their order (at most the first four), each with its own region's map
 /// (`symmetric_vertex_map()` with that curve alone, `np` passed on, without
-/// the local refinement: `number_of_local_rounds` 0, and with the curve
+/// the local and spectral refinements, whatever `number_of_local_rounds` and
+/// `number_of_eigenfunctions` say, and with the curve
 /// extraction's `symmetry_tolerance` of 1.0 unless `np` sets one); the
 /// first one with which a missing part is detected repairs it (see the
 /// overload taking one curve). A global symmetry that survives the damage

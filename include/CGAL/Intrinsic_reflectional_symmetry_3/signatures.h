@@ -105,6 +105,11 @@ void check_triangle_mesh(const TriangleMesh& tm, const NamedParameters&)
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value type}
 ///     \cgalParamDefault{an automatically indexed internal map}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class (its squared area of a triangle)}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{a \cgal kernel deduced from the point type}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::vector<double> vertex_areas(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::default_values())

@@ -177,7 +177,9 @@ Region_growing_result grow_symmetric_regions(const TriangleMesh& tm, const Geode
 /// \cgalNamedParamsEnd
 ///
 /// \returns the number of faces in a region
-/// \throws Input_error (`invalid_parameter`) if `D` or a curve does not match `tm`
+/// \throws Input_error (`invalid_parameter`) if `D` or a curve does not match `tm`, or if a named
+/// parameter is out of range (also `number_of_local_rounds` and `number_of_eigenfunctions`, checked
+/// here as in `symmetric_vertex_map()` so that one set of parameters serves both)
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh,
           typename CurveRange, typename FaceRegionMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::size_t symmetric_regions(const TriangleMesh& tm, const Geodesic_distance_matrix& D, const CurveRange& curves,
@@ -279,8 +281,9 @@ std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance
 /// beyond 3 sigma ignored; sigma three times the spacing of 2K points spread
 /// evenly over the region), and after each round the landmarks are taken
 /// anew, spread, from the mutual pairs of samples of the map (a sample and
-/// the sample nearest to its partner). On the 19 FAUST shapes this raises the
-/// correspondence rate from 98.5 % to 99.1 % (posed shapes 97.1 % to 98.4 %).
+/// the sample nearest to its partner). On the 19 FAUST shapes this raised the
+/// correspondence rate from 98.5 % to 99.1 % (posed shapes 97.1 % to 98.4 %),
+/// measured when it was introduced, before the spectral step below.
 ///
 /// **Spectral refinement.** Each vertex is matched alone, so a patch can
 /// settle on a wrong but self-consistent answer: where samples were matched
@@ -293,9 +296,10 @@ std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance
 /// orthogonal, each sample takes the vertex nearest to its image under C in
 /// the spectral embedding, and k grows from 30 to `number_of_eigenfunctions`
 /// (default 150) by 5; at the last size every vertex is mapped so. On FAUST
-/// this raises the correspondence rate from 99.1 % to 99.7 % (posed shapes
-/// 98.4 % to 99.4 %, tr_reg_002 96.4 % to 99.9 %), on SCAPE from 63.3 % to
-/// 65.2 %, for about 1.5 s per 5K-vertex shape on two cores; the cost grows as
+/// this raises the correspondence rate from 99.0 % to 99.7 % (posed shapes
+/// 98.15 % to 99.5 %, tr_reg_002 96.5 % to 99.9 %), on SCAPE from 65.2 % to
+/// 66.8 % (symmetry_map_benchmark, seed 0, column CR0% without the step),
+/// for about 1.5 s per 5K-vertex shape on two cores; the cost grows as
 /// the square of the region's number of vertices. Regions with fewer than 40
 /// vertices on their faces keep the landmark match.
 ///

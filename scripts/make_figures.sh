@@ -78,4 +78,17 @@ render "$tmp/repair/repaired.ply" "$tmp/after.png" "${camera[@]}" --scalars=RGB 
 side_by_side "$fig/repair_before_after.png" "$tmp/before.png" "right arm cut off" \
   "$tmp/after.png" "irsym --repair"
 
+# Segmentation (segmentation_example on CGAL's camel): ours and CGAL's SDF
+# segmentation with the same number of segments, one colour per face
+example="$build/examples/Intrinsic_reflectional_symmetry_3/segmentation_example"
+if [ -f "$tarball" ] && [ -x "$example" ]; then
+  mkdir -p "$tmp/segmentation"
+  "$example" "$tmp/data/meshes/camel.off" "$tmp/segmentation"
+  view=(--up=+Y --camera-azimuth-angle=50 --cells --scalars=RGBA --comp=-2)
+  render "$tmp/segmentation/symmetry_segmentation.ply" "$tmp/ours.png" "${view[@]}"
+  render "$tmp/segmentation/sdf_segmentation.ply" "$tmp/sdf.png" "${view[@]}"
+  side_by_side "$fig/camel_segmentation.png" "$tmp/ours.png" "symmetry-aware segmentation" \
+    "$tmp/sdf.png" "CGAL's SDF segmentation, same count"
+fi
+
 ls -l "$fig"

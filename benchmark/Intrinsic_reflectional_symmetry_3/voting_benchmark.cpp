@@ -14,7 +14,9 @@
 //   --meshes x,y,...      mesh file names (default camel.off,man.off)
 //   --threads N           threads of the parallel stages (default: all)
 //   --reference-samples N samples of the fast-vs-reference run (default 300; 0: skip)
-//   --reference-eps a,b   similarity thresholds of that run (default 0.025,0.05,0.1,0.2)
+//   --reference-eps a,b   similarity thresholds of that run (default 0.025,0.05,0.1,0.2);
+//                         then the same comparison with the defaults on the meshes, FAUST's
+//                         tr_reg_000 (with --faust) and three generated shapes
 //   --cap-samples N       samples of the voting-pair cap study on each mesh (default 1000; 0: skip):
 //                         tau with 1/2 .. 1/16 of the similar pairs voting, against all of them
 //   --no-scaling          skip the scaling study (e.g. to run only fast vs reference)
@@ -263,6 +265,47 @@ void versus_reference(const std::string& path, std::size_t n, const std::vector<
   std::cout << stages.str();
   std::cout << "\n(mesh, D) index built once for the shared-index column: " << std::fixed << std::setprecision(4)
             << t_index << " s\n";
+}
+
+// The same comparison with the default parameters on several shapes: the
+// reference costs about voting pairs x |beta| x similar pairs, so its ratio to
+// the fast voting grows with the number of pairs the similarity filter keeps
+// (few on CGAL's meshes and FAUST, many on the smooth generated shapes).
+void versus_reference_by_shape(const std::vector<std::pair<std::string, Mesh>>& shapes, std::size_t n)
+{
+  std::cout << "\n## Fast voting vs the literal reference by shape, default parameters, " << n << " samples\n\n"
+            << "| shape | vertices | similar pairs | voted | reference s | fast, 1 thread s | fast, parallel s |"
+               " speed-up (1 thread) | speed-up (parallel) | bit-different tau |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for(const auto& named : shapes)
+  {
+    const Mesh& m = named.second;
+    IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+    const std::size_t ns = (std::min)(n, std::size_t(num_vertices(m)));
+    const std::vector<std::size_t> samples =
+      IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(1u));
+    const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+    const Pairs pairs = similar_pairs(m, D, IRS::vertex_sdf_values(m), IRS::vertex_areas(m));
+    const IRS::internal::Voting_setup setup =
+      IRS::internal::make_voting_setup(m, D, pairs, IRS::parameters::default_values());
+    std::vector<double> tau_ref, tau_seq, tau_par;
+    CGAL::Real_timer t;
+    t.start();
+    const IRS::Irsa_voting_result ref = IRS::internal::Reference_voting(setup).run(tau_ref);
+    const double t_ref = t.time();
+    t.reset();
+    IRS::internal::run_fast_voting<CGAL::Sequential_tag>(setup, tau_seq, 0);
+    const double t_seq = t.time();
+    t.reset();
+    IRS::internal::run_fast_voting<CGAL::Parallel_if_available_tag>(setup, tau_par, 0);
+    const double t_par = t.time();
+    std::size_t bit_different = 0;
+    for(std::size_t v = 0; v < tau_ref.size(); ++v)
+      bit_different += (tau_ref[v] != tau_seq[v] || tau_ref[v] != tau_par[v]);
+    std::cout << "| " << named.first << " | " << num_vertices(m) << " | " << pairs.size() << " | "
+              << ref.voting_pairs.size() << " | " << std::fixed << std::setprecision(4) << t_ref << " | " << t_seq
+              << " | " << t_par << " | " << std::setprecision(0) << t_ref / t_seq << "x | " << t_ref / t_par
+              << "x | " << bit_different << " |" << std::endl << std::defaultfloat;
+  }
 }
 
 // ---------------------------------------------------------------- robustness
@@ -654,6 +697,24 @@ int main(int argc, char** argv)
     // O(voting pairs x (V / 16 + similar pairs + E K) + similar pairs x |beta|)
     if(find_file(dirs, meshes.front(), camel))
       versus_reference(camel, reference_samples, reference_thresholds);
+    std::vector<std::pair<std::string, Mesh>> shapes;
+    for(const std::string& name : meshes)
+    {
+      std::string path;
+      Mesh m;
+      if(find_file(dirs, name, path) && CGAL::IO::read_polygon_mesh(path, m) && !is_empty(m))
+        shapes.emplace_back(name, std::move(m));
+    }
+    if(!faust.empty())
+    {
+      Mesh m;
+      if(CGAL::IO::read_polygon_mesh(faust + "/tr_reg_000.off", m) && !is_empty(m))
+        shapes.emplace_back("FAUST tr_reg_000", std::move(m));
+    }
+    shapes.emplace_back("generated two snowmen", IRS::generate_two_snowmen<Mesh>(3000).mesh);
+    shapes.emplace_back("generated stick figure", IRS::generate_stick_figure<Mesh>(3000).mesh);
+    shapes.emplace_back("generated snowman", IRS::generate_snowman<Mesh>(2500).mesh);
+    versus_reference_by_shape(shapes, reference_samples);
   }
   for(const std::string& name : meshes)
   {

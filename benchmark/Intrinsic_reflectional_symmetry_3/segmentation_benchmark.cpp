@@ -32,6 +32,7 @@
 // usage: segmentation_benchmark [DATA_DIR] [--only ID] [--samples N] [--write DIR] [--threads T]
 //                               [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A]
 //                               [--merge-uncovered] [--nested] [--sdf-range K] [--coverage C] [--seed S]
+//                               [--clusters LO,HI]
 //   DATA_DIR  default ../shared/data (relative to the current directory); psb/ inside it
 //   ID        only this model id (may be repeated)
 //   N         samples per model (default 1000)
@@ -49,6 +50,8 @@
 //             segments, as DIR/sdf_range/<id>.<n>.seg (to compare offline studies at any n)
 //   C         minimum_region_coverage of the merge (default 0.8; 0 is the paper's rule)
 //   S         seed of the farthest-point samples (default 0)
+//   LO,HI     range of the numbers of clusters of the over-segmentation's graph cuts
+//             (Sdf_over_segmenter's second and third arguments; default 2,12)
 //   --merge-uncovered  merge_uncovered_parts(true) for ours, ours+axis and pure: faces no region
 //             covers join a neighbouring segment, so the number of segments is the number of curves
 
@@ -122,6 +125,7 @@ struct Options
   std::size_t sdf_range = 0;
   bool merge_uncovered = false;
   unsigned int seed = 0; // of the farthest-point samples
+  std::size_t min_clusters = 2, max_clusters = 12; // Sdf_over_segmenter's range of graph cuts
   bool nested = false;
 };
 
@@ -274,7 +278,7 @@ bool run_model(const Options& o, const std::string& id, const std::string& categ
   const std::vector<double> sdf = sdf_values(m);
   const double seconds_sdf_values = t_sdf.time();
   IRS::symmetric_regions(m, D, curves, fmap(region));
-  r.parts = IRS::Sdf_over_segmenter(o.parts).from_sdf_values(m, get(CGAL::vertex_point, m), sdf, fmap(part));
+  r.parts = IRS::Sdf_over_segmenter(o.parts, o.min_clusters, o.max_clusters).from_sdf_values(m, get(CGAL::vertex_point, m), sdf, fmap(part));
   const auto np = IRS::parameters::minimum_segment_area(o.minimum_area).merge_uncovered_parts(o.merge_uncovered)
                     .minimum_region_coverage(o.minimum_coverage);
   r.segments[0] = IRS::merge_over_segmentation(m, fmap(region), fmap(part), fmap(ours), np);
@@ -352,11 +356,19 @@ int main(int argc, char** argv)
     else if(a == "--merge-uncovered") o.merge_uncovered = true;
     else if(a == "--coverage") o.minimum_coverage = std::atof(value().c_str());
     else if(a == "--seed") o.seed = unsigned(std::atol(value().c_str()));
+    else if(a == "--clusters")
+    {
+      const std::string v = value();
+      const std::size_t comma = v.find(',');
+      o.min_clusters = std::size_t(std::max(1L, std::atol(v.substr(0, comma).c_str())));
+      o.max_clusters = comma == std::string::npos ? o.min_clusters
+                                                  : std::size_t(std::max(1L, std::atol(v.substr(comma + 1).c_str())));
+    }
     else if(a == "--nested") o.nested = true;
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: segmentation_benchmark [DATA_DIR] [--only ID] [--samples N] [--write DIR] [--threads T]\n"
-                   "                              [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A] [--merge-uncovered] [--nested] [--sdf-range K] [--coverage C] [--seed S]\n";
+                   "                              [--max-curves C] [--stopping-ratio R] [--parts P] [--min-area A] [--merge-uncovered] [--nested] [--sdf-range K] [--coverage C] [--seed S] [--clusters LO,HI]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }

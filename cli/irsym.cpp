@@ -364,7 +364,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
 
   log.start("prepare");
   // a target above the vertex count can only be reached by remeshing (decimation only removes vertices)
-  const bool remesh = opt.remesh || (opt.target_vertices > 0 && std::size_t(opt.target_vertices) > num_vertices(input));
+  const bool remesh = opt.remesh || std::size_t(opt.target_vertices) > num_vertices(input);
   const auto prepared = opt.target_vertices > 0
     ? IRS::prepare_mesh(input, IRS::parameters::target_number_of_vertices(std::size_t(opt.target_vertices))
                                  .isotropic_remeshing(remesh))

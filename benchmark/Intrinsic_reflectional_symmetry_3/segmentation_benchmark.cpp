@@ -125,7 +125,8 @@ struct Options
   std::size_t sdf_range = 0;
   bool merge_uncovered = false;
   unsigned int seed = 0; // of the farthest-point samples
-  std::size_t min_clusters = 2, max_clusters = 12; // Sdf_over_segmenter's range of graph cuts
+  std::size_t min_clusters = IRS::default_minimum_number_of_clusters, // Sdf_over_segmenter's range of graph cuts
+              max_clusters = IRS::default_maximum_number_of_clusters;
   bool nested = false;
 };
 

@@ -170,6 +170,41 @@ void scaling(const std::string& path, const std::vector<std::size_t>& sample_cou
 
 // ---------------------------------------------------------------- fast vs reference
 
+// Heat-method geodesics from n farthest-point samples (seed 1): the input of
+// every study below
+IRS::Geodesic_distance_matrix sample_geodesics(const Mesh& m, std::size_t n)
+{
+  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
+  return IRS::compute_geodesic_distance_matrix(oracle, samples);
+}
+
+// The reference and the fast voting (one thread, then in parallel) on the same
+// set-up, each timed alone
+struct Reference_comparison
+{
+  IRS::Irsa_voting_result ref, seq, par;
+  std::vector<double> tau_ref, tau_seq, tau_par;
+  double t_ref = 0., t_seq = 0., t_par = 0.;
+};
+
+Reference_comparison compare_with_reference(const IRS::internal::Voting_setup& setup)
+{
+  Reference_comparison c;
+  CGAL::Real_timer t;
+  t.start();
+  c.ref = IRS::internal::Reference_voting(setup).run(c.tau_ref);
+  c.t_ref = t.time();
+  t.reset();
+  c.seq = IRS::internal::run_fast_voting<CGAL::Sequential_tag>(setup, c.tau_seq, 0);
+  c.t_seq = t.time();
+  t.reset();
+  c.par = IRS::internal::run_fast_voting<CGAL::Parallel_if_available_tag>(setup, c.tau_par, 0);
+  c.t_par = t.time();
+  return c;
+}
+
 // One row per similarity threshold. The set-up shared by both implementations
 // (input checks, vertex adjacency, sample matrix, sigma: make_voting_setup())
 // is timed apart; "voting" is what follows it, "end to end" includes it. The
@@ -182,10 +217,7 @@ void versus_reference(const std::string& path, std::size_t n, const std::vector<
 {
   Mesh m;
   if(!CGAL::IO::read_polygon_mesh(path, m) || is_empty(m)) return;
-  IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
-  const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
-  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const IRS::Geodesic_distance_matrix D = sample_geodesics(m, n);
   const std::vector<double> sdf = IRS::vertex_sdf_values(m), areas = IRS::vertex_areas(m);
   std::cout << "\n## Fast voting vs the literal reference (Alg. 1-2): " << path << ", " << n
             << " samples, default voting parameters\n\n"
@@ -209,17 +241,10 @@ void versus_reference(const std::string& path, std::size_t n, const std::vector<
     const IRS::internal::Voting_setup setup =
       IRS::internal::make_voting_setup(m, D, pairs, IRS::parameters::default_values());
     const double t_setup = t.time();
-    std::vector<double> tau_ref, tau_seq, tau_par;
-    t.reset();
-    const IRS::Irsa_voting_result ref = IRS::internal::Reference_voting(setup).run(tau_ref);
-    const double t_ref = t.time();
-    t.reset();
-    const IRS::Irsa_voting_result seq = IRS::internal::run_fast_voting<CGAL::Sequential_tag>(setup, tau_seq, 0);
-    const double t_seq = t.time();
-    t.reset();
-    const IRS::Irsa_voting_result par =
-      IRS::internal::run_fast_voting<CGAL::Parallel_if_available_tag>(setup, tau_par, 0);
-    const double t_par = t.time();
+    const Reference_comparison c = compare_with_reference(setup);
+    const IRS::Irsa_voting_result &ref = c.ref, &seq = c.seq, &par = c.par;
+    const std::vector<double> &tau_ref = c.tau_ref, &tau_seq = c.tau_seq, &tau_par = c.tau_par;
+    const double t_ref = c.t_ref, t_seq = c.t_seq, t_par = c.t_par;
     if(!index)
     {
       t.reset();
@@ -279,32 +304,18 @@ void versus_reference_by_shape(const std::vector<std::pair<std::string, Mesh>>& 
   for(const auto& named : shapes)
   {
     const Mesh& m = named.second;
-    IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
-    const std::size_t ns = (std::min)(n, std::size_t(num_vertices(m)));
-    const std::vector<std::size_t> samples =
-      IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(1u));
-    const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+    const IRS::Geodesic_distance_matrix D = sample_geodesics(m, (std::min)(n, std::size_t(num_vertices(m))));
     const Pairs pairs = similar_pairs(m, D, IRS::vertex_sdf_values(m), IRS::vertex_areas(m));
     const IRS::internal::Voting_setup setup =
       IRS::internal::make_voting_setup(m, D, pairs, IRS::parameters::default_values());
-    std::vector<double> tau_ref, tau_seq, tau_par;
-    CGAL::Real_timer t;
-    t.start();
-    const IRS::Irsa_voting_result ref = IRS::internal::Reference_voting(setup).run(tau_ref);
-    const double t_ref = t.time();
-    t.reset();
-    IRS::internal::run_fast_voting<CGAL::Sequential_tag>(setup, tau_seq, 0);
-    const double t_seq = t.time();
-    t.reset();
-    IRS::internal::run_fast_voting<CGAL::Parallel_if_available_tag>(setup, tau_par, 0);
-    const double t_par = t.time();
+    const Reference_comparison c = compare_with_reference(setup);
     std::size_t bit_different = 0;
-    for(std::size_t v = 0; v < tau_ref.size(); ++v)
-      bit_different += (tau_ref[v] != tau_seq[v] || tau_ref[v] != tau_par[v]);
+    for(std::size_t v = 0; v < c.tau_ref.size(); ++v)
+      bit_different += (c.tau_ref[v] != c.tau_seq[v] || c.tau_ref[v] != c.tau_par[v]);
     std::cout << "| " << named.first << " | " << num_vertices(m) << " | " << pairs.size() << " | "
-              << ref.voting_pairs.size() << " | " << std::fixed << std::setprecision(4) << t_ref << " | " << t_seq
-              << " | " << t_par << " | " << std::setprecision(0) << t_ref / t_seq << "x | " << t_ref / t_par
-              << "x | " << bit_different << " |" << std::endl << std::defaultfloat;
+              << c.ref.voting_pairs.size() << " | " << std::fixed << std::setprecision(4) << c.t_ref << " | "
+              << c.t_seq << " | " << c.t_par << " | " << std::setprecision(0) << c.t_ref / c.t_seq << "x | "
+              << c.t_ref / c.t_par << "x | " << bit_different << " |" << std::endl << std::defaultfloat;
   }
 }
 
@@ -424,10 +435,7 @@ void cap_study(const std::string& path, std::size_t n)
   Mesh m;
   if(!CGAL::IO::read_polygon_mesh(path, m) || is_empty(m)) { std::cout << "cannot read " << path << "\n"; return; }
   n = (std::min)(n, std::size_t(num_vertices(m)));
-  IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
-  const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
-  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const IRS::Geodesic_distance_matrix D = sample_geodesics(m, n);
   const Pairs pairs = similar_pairs(m, D, IRS::vertex_sdf_values(m), IRS::vertex_areas(m));
   auto run = [&](std::size_t cap, unsigned seed, double& seconds) {
     auto tau = get(CGAL::dynamic_vertex_property_t<double>(), m);
@@ -541,9 +549,7 @@ void quadruple_study()
 void ridge_row(Mesh& m, const std::string& name, const std::vector<std::vector<char>>& axes,
                const std::vector<std::string>& axis_names, std::size_t ns, const std::vector<double>& floors)
 {
-  IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
-  const auto samples = IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(1u));
-  const auto D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const IRS::Geodesic_distance_matrix D = sample_geodesics(m, ns);
   const Pairs pairs = similar_pairs(m, D, IRS::vertex_sdf_values(m), IRS::vertex_areas(m));
   for(double fl : floors)
   {

@@ -60,6 +60,12 @@ constexpr double default_minimum_region_coverage = 0.8;
 constexpr std::size_t default_number_of_over_segmentation_parts = 20;
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// The range of the numbers of clusters of the graph cuts whose common
+/// refinement is the default over-segmentation (`Sdf_over_segmenter`).
+constexpr std::size_t default_minimum_number_of_clusters = 2;
+constexpr std::size_t default_maximum_number_of_clusters = 12;
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// The default model of `OverSegmenter`: \cgal's SDF segmentation
 /// (`Surface_mesh_segmentation`: shape diameter function per face, soft
 /// clustering of its values, graph cut regularised by dihedral angles, which
@@ -104,7 +110,8 @@ public:
   /// \param number_of_rays the SDF rays per face (\cgal's default 25)
   /// \throws Input_error (`invalid_parameter`) for a value out of range
   explicit Sdf_over_segmenter(std::size_t number_of_parts = default_number_of_over_segmentation_parts,
-                              std::size_t minimum_number_of_clusters = 2, std::size_t maximum_number_of_clusters = 12,
+                              std::size_t minimum_number_of_clusters = default_minimum_number_of_clusters,
+                              std::size_t maximum_number_of_clusters = default_maximum_number_of_clusters,
                               double smoothing_lambda = 0.26, double cone_angle = 2. / 3. * CGAL_PI,
                               std::size_t number_of_rays = 25)
     : parts_(number_of_parts), min_clusters_(minimum_number_of_clusters), max_clusters_(maximum_number_of_clusters),

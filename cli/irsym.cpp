@@ -363,12 +363,11 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   }
 
   log.start("prepare");
-  // a target above the vertex count can only be reached by remeshing (decimation only removes vertices)
-  const bool remesh = opt.remesh || std::size_t(opt.target_vertices) > num_vertices(input);
-  const auto prepared = opt.target_vertices > 0
-    ? IRS::prepare_mesh(input, IRS::parameters::target_number_of_vertices(std::size_t(opt.target_vertices))
-                                 .isotropic_remeshing(remesh))
-    : IRS::prepare_mesh(input);
+  // without --remesh, prepare_mesh() decimates to a lower target and remeshes to a higher one
+  const auto prepared = opt.target_vertices <= 0 ? IRS::prepare_mesh(input)
+    : opt.remesh ? IRS::prepare_mesh(input, IRS::parameters::target_number_of_vertices(std::size_t(opt.target_vertices))
+                                              .isotropic_remeshing(true))
+                 : IRS::prepare_mesh(input, IRS::parameters::target_number_of_vertices(std::size_t(opt.target_vertices)));
   const Mesh& work = prepared.working_mesh();
   log.stop();
 

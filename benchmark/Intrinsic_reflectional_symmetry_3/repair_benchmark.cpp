@@ -5,8 +5,8 @@
 // Symmetry-driven part repair (paper Sec. 4.2) by the package's protocol
 // (run_part_repair_protocol() in part_repair.h: cut limbs off with a plane,
 // cap, run the pipeline, repair, measure), on the generated stick figure,
-// on CGAL's complete meshes (DATA_DIR/cgal_meshes, brought to about 5000
-// vertices; only the row "none") and on FAUST (DATA_DIR/faust_5k; each data
+// on CGAL's complete meshes (DATA_DIR/cgal_meshes, decimated to 5000
+// vertices where larger; only the row "none") and on FAUST (DATA_DIR/faust_5k; each data
 // set skipped when absent): per shape, the complete
 // shape (row "none": nothing is missing, so "parts" must be 0), one limb
 // (the right forearm, cut 0.2 from the hand tip) and two limbs (that forearm
@@ -260,8 +260,9 @@ int main(int argc, char** argv)
   }
 
   // CGAL's complete meshes with a mirror symmetry (DATA_DIR/cgal_meshes), each
-  // brought to about 5000 vertices as `irsym --target-vertices 5000` does: on
-  // a complete shape nothing may be added (row "none", "parts" must be 0)
+  // decimated to 5000 vertices where larger, as `irsym --target-vertices 5000`
+  // does (it would remesh the smaller ones up): on a complete shape nothing may
+  // be added (row "none", "parts" must be 0)
   const fs::path cgal_dir = fs::path(o.data) / "cgal_meshes";
   if(o.complete && !o.oracle_only && fs::exists(cgal_dir))
   {
@@ -280,7 +281,9 @@ int main(int argc, char** argv)
       }
       try
       {
-        const auto prepared = IRS::prepare_mesh(input, IRS::parameters::target_number_of_vertices(5000));
+        // decimated to 5000 vertices where larger, kept as it is where smaller
+        const std::size_t target = (std::min)(std::size_t(5000), std::size_t(num_vertices(input)));
+        const auto prepared = IRS::prepare_mesh(input, IRS::parameters::target_number_of_vertices(target));
         run(o, f.stem().string(), "none", prepared.working_mesh(), {});
       }
       catch(const std::exception& err)

@@ -604,10 +604,27 @@ TEST(Preparation, DecimationReachesTargetAndLeavesInputIntact)
   EXPECT_EQ(points_of(tm), before);
   EXPECT_EQ(faces_of(tm), faces_before);
 
-  // a decimation target at or above the vertex count changes nothing
-  const auto same = IRS::prepare_mesh(tm, IRS::parameters::target_number_of_vertices(5000));
+  // the input's own vertex count changes nothing
+  const auto same = IRS::prepare_mesh(tm, IRS::parameters::target_number_of_vertices(num_vertices(tm)));
   EXPECT_TRUE(same.is_identity());
   EXPECT_EQ(num_vertices(same.working_mesh()), num_vertices(tm));
+}
+
+// decimation cannot add vertices: a larger target is reached by remeshing,
+// unless remeshing is explicitly refused, which is an error, not a silent copy
+TEST(Preparation, TargetAboveTheVertexCountRemeshes)
+{
+  const Mesh tm = sphere<Mesh>(3); // 642 vertices
+  const std::vector<Point> before = points_of(tm);
+  const auto prepared = IRS::prepare_mesh(tm, IRS::parameters::target_number_of_vertices(1500));
+  EXPECT_EQ(prepared.preparation(), IRS::Mesh_preparation::isotropic_remeshing);
+  const double n = double(num_vertices(prepared.working_mesh()));
+  EXPECT_GT(n, 0.9 * 1500);
+  EXPECT_LT(n, 1.1 * 1500);
+  EXPECT_NO_THROW(IRS::check_input(prepared.working_mesh()));
+  EXPECT_EQ(points_of(tm), before);
+  expect_error([&] { IRS::prepare_mesh(tm, IRS::parameters::target_number_of_vertices(1500).isotropic_remeshing(false)); },
+               IRS::Input_problem::invalid_parameter, {"1500", "642", "isotropic_remeshing(false)"});
 }
 
 TEST(Preparation, DecimationOfPolyhedronInput)

@@ -482,7 +482,7 @@ TEST(RepairFaustRegression, CompleteShapesGetNothingAdded)
 }
 
 // CGAL's bear.off (libcgal-demo, unpacked by the set-up; skipped when
-// absent), complete, brought to about 5000 vertices as repair_benchmark and
+// absent), complete, decimated to 5000 vertices as repair_benchmark and
 // `irsym --target-vertices 5000` do: the map fails on a patch at the base of
 // an ear whose reflection lands off the surface, and that patch was copied as
 // a missing part; its reflected collar does not fit the other side (ICP

@@ -170,10 +170,12 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 /// between its elements and those of `tm`. `tm` is never modified.
 ///
 /// - Neither `target_number_of_vertices` nor `isotropic_remeshing` given, or a
-///   decimation target not below the vertex count of `tm`: the working mesh is an exact
-///   copy (vertex `i` and face `j` of the working mesh are vertex `i` and face `j` of
-///   the index maps of `tm`), and all maps are identities.
-/// - `isotropic_remeshing(true)`: `PMP::isotropic_remeshing()` with the edge length
+///   target equal to the vertex count of `tm` without `isotropic_remeshing(true)`: the
+///   working mesh is an exact copy (vertex `i` and face `j` of the working mesh are
+///   vertex `i` and face `j` of the index maps of `tm`), and all maps are identities.
+/// - `isotropic_remeshing(true)`, or a target above the vertex count of `tm` (only
+///   remeshing adds vertices; an explicit `isotropic_remeshing(false)` with such a target
+///   throws): `PMP::isotropic_remeshing()` with the edge length
 ///   `isotropic_edge_length_for_vertex_count(area, target)` (target: `target_number_of_vertices`,
 ///   or the vertex count of `tm`). Remeshing keeps edges within [4/5, 4/3] of that length,
 ///   so the vertex count can miss the target by up to ~50 %: while the count is below the
@@ -205,7 +207,7 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 ///   \cgalParamNBegin{isotropic_remeshing}
 ///     \cgalParamDescription{whether to remesh isotropically (rather than decimate)}
 ///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`false`}
+///     \cgalParamDefault{`false`, `true` for a target above the vertex count of `tm`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{iterations of isotropic remeshing}
@@ -241,7 +243,8 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 ///
 /// \throws Input_error any problem of `check_input()` on `tm` (`too_many_samples` against
 ///   the working mesh); `invalid_parameter` for a target below 4 or above
-///   `maximum_target_number_of_vertices`.
+///   `maximum_target_number_of_vertices`, or for a target above the vertex count of `tm`
+///   with `isotropic_remeshing(false)`.
 template <typename TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Prepared_mesh<typename GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type>
 prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::default_values())
@@ -274,7 +277,8 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   internal::input_check_mesh(tm, vpm, vim, fim, gt);
 
   const std::size_t nv = internal::input_count(vertices(tm)), nf = internal::input_count(faces(tm));
-  const bool remesh = choose_parameter(get_parameter(np, internal_np::isotropic_remeshing), false);
+  const bool remesh_given = !is_default_parameter<CGAL_NP_CLASS, internal_np::isotropic_remeshing_t>::value;
+  bool remesh = choose_parameter(get_parameter(np, internal_np::isotropic_remeshing), false);
   const bool has_target = !is_default_parameter<CGAL_NP_CLASS, internal_np::target_number_of_vertices_t>::value;
   long long target_count = (long long)nv;
   if(has_target) {
@@ -284,6 +288,16 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
       os << "target_number_of_vertices is " << target_count << ", it must be between 4 and "
          << maximum_target_number_of_vertices;
       throw Input_error(Input_problem::invalid_parameter, os.str());
+    }
+    // decimation only removes vertices: a larger count needs remeshing
+    if(std::size_t(target_count) > nv) {
+      if(remesh_given && !remesh) {
+        std::ostringstream os;
+        os << "target_number_of_vertices is " << target_count << ", above the " << nv
+           << " vertices of the input, but isotropic_remeshing(false) forbids adding vertices";
+        throw Input_error(Input_problem::invalid_parameter, os.str());
+      }
+      remesh = true;
     }
   }
   const unsigned int iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 3u);

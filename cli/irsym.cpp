@@ -31,6 +31,7 @@
 #include "irsym_output.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <fstream>
@@ -40,6 +41,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <string>
 #include <thread>
 
@@ -357,10 +359,24 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
       .add("edges", stats.number_of_edges)
       .add("connected_components", stats.number_of_connected_components)
       .add("boundary_cycles", stats.number_of_boundary_cycles)
+      .add("longest_boundary_cycle_length", stats.longest_boundary_cycle_length)
       .add("bounding_box_diagonal", stats.bounding_box_diagonal)
       .add("mean_edge_length", stats.mean_edge_length).add("area", stats.area);
     report.add("input", in);
   }
+  // Small holes are tolerated (paper, Fig. 11), large missing parts are not:
+  // geodesics then run around the hole. A round hole whose rim is as long as
+  // sqrt(area) covers about 8 % of the surface.
+  irsym::Json warnings = irsym::Json::array();
+  if(stats.longest_boundary_cycle_length > std::sqrt(stats.area)) {
+    std::ostringstream os;
+    os << "the mesh has a boundary (hole or open border) of length " << stats.longest_boundary_cycle_length
+       << ", more than the square root of its area (" << std::sqrt(stats.area)
+       << "): the method expects a closed mesh with small holes, and large missing parts distort the geodesics";
+    std::cerr << "irsym: warning: " << os.str() << '\n';
+    warnings.push(os.str());
+  }
+  report.add("warnings", warnings);
 
   log.start("prepare");
   // without --remesh, prepare_mesh() decimates to a lower target and remeshes to a higher one

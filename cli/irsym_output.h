@@ -43,6 +43,7 @@ public:
             typename = std::enable_if_t<std::is_arithmetic<T>::value && !std::is_same<T, bool>::value>>
   Json& add(const std::string& key, T value) { return raw(key, number(double(value))); }
   Json& push(const Json& value) { return raw("", value.nested()); }
+  Json& push(const std::string& value) { return raw("", quote(value)); }
   template <typename T, typename = std::enable_if_t<std::is_arithmetic<T>::value>>
   Json& push(T value) { return raw("", number(double(value))); }
 

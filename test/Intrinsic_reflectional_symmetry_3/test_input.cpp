@@ -442,7 +442,11 @@ TEST(CheckInput, ClosedMeshWithSmallHoleIsAccepted)
   std::vector<Point> points;
   std::vector<std::vector<std::size_t> > polygons;
   PMP::polygon_mesh_to_polygon_soup(closed, points, polygons);
+  const std::vector<std::size_t> hole = polygons[17];
   polygons.erase(polygons.begin() + 17); // a one-triangle hole
+  double hole_perimeter = 0;
+  for(std::size_t k = 0; k < 3; ++k)
+    hole_perimeter += std::sqrt(CGAL::squared_distance(points[hole[k]], points[hole[(k + 1) % 3]]));
   const std::string path = (temp_dir() / "holed.off").string();
   ASSERT_TRUE(CGAL::IO::write_polygon_soup(path, points, polygons, CGAL::parameters::stream_precision(17)));
   Mesh m;
@@ -453,6 +457,7 @@ TEST(CheckInput, ClosedMeshWithSmallHoleIsAccepted)
   EXPECT_EQ(r.number_of_faces, num_faces(closed) - 1);
   EXPECT_EQ(r.number_of_boundary_cycles, 1u);
   EXPECT_EQ(r.number_of_border_edges, 3u);
+  EXPECT_NEAR(r.longest_boundary_cycle_length, hole_perimeter, 1e-12);
   EXPECT_EQ(r.number_of_connected_components, 1u);
   EXPECT_GT(r.area, 0.);
   EXPECT_GT(r.mean_edge_length, 0.);
@@ -473,6 +478,7 @@ TEST(CheckInput, TwoComponentsAreAccepted)
   ASSERT_NO_THROW(r = IRS::check_input(p));
   EXPECT_EQ(r.number_of_connected_components, 2u);
   EXPECT_EQ(r.number_of_boundary_cycles, 0u);
+  EXPECT_EQ(r.longest_boundary_cycle_length, 0.);
   EXPECT_EQ(r.number_of_edges, 12u);
   EXPECT_NEAR(r.area, 2 * (1.5 + std::sqrt(3.) / 2), 1e-12);
 }

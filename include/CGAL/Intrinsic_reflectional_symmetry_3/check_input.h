@@ -66,6 +66,7 @@ struct Input_report
   std::size_t number_of_connected_components = 0;  ///< face-connected components
   std::size_t number_of_boundary_cycles = 0;       ///< holes and open boundaries
   std::size_t number_of_border_edges = 0;
+  double longest_boundary_cycle_length = 0;        ///< length of the longest boundary cycle (0 when closed)
   double bounding_box_diagonal = 0;                ///< length of the diagonal of the axis-aligned bounding box
   double mean_edge_length = 0;
   double area = 0;                                 ///< total surface area
@@ -462,7 +463,12 @@ Input_report input_compute_report(const TriangleMesh& tm, const VPM& vpm, const 
     ++r.number_of_border_edges;
     if(get(visited, h)) continue;
     ++r.number_of_boundary_cycles;
-    for(halfedge_descriptor b : halfedges_around_face(h, tm)) put(visited, b, true);
+    double cycle_length = 0;
+    for(halfedge_descriptor b : halfedges_around_face(h, tm)) {
+      put(visited, b, true);
+      cycle_length += CGAL::to_double(PMP::edge_length(b, tm, cgal_np));
+    }
+    r.longest_boundary_cycle_length = (std::max)(r.longest_boundary_cycle_length, cycle_length);
   }
 
   const CGAL::Bbox_3 box = PMP::bbox(tm, cgal_np);

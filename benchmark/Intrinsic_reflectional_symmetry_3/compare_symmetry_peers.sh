@@ -1,36 +1,75 @@
 #!/usr/bin/env bash
-# Side by side on the FAUST shapes: our symmetric map (written by
-# symmetry_map_benchmark --write) against the two peer baselines of the shared
-# evaluation tools (GPS sign flips, Ovsjanikov et al. 2008; best extrinsic
-# mirror plane), all scored by the same reference evaluator (eval_symmetry.py,
-# protocol of Kim et al. 2010). Also a cross-check of our own C++ metric.
+# Side by side on the FAUST shapes and the SCAPE meshes: our symmetric map
+# (written by symmetry_map_benchmark --write) against the two peer baselines of
+# the shared evaluation tools (GPS sign flips, Ovsjanikov et al. 2008; best
+# extrinsic mirror plane), all scored by the same reference evaluator
+# (eval_symmetry.py, protocol of Kim et al. 2010). Also a cross-check of our own
+# C++ metric. On SCAPE every method runs on the mesh our benchmark writes (its
+# pinched vertex split by repair_input()), with the ground truth written with it.
 #   bash compare_symmetry_peers.sh BUILD_DIR [SHARED_DIR] [OUT_DIR]
-# SHARED_DIR defaults to ../shared next to the repository; skips cleanly if absent.
+# SHARED_DIR defaults to ../shared next to the repository; each collection is
+# skipped cleanly if absent.
 set -euo pipefail
 py=${PYTHON:-/usr/bin/python3} # the tools need Debian's numpy and scipy
 here=$(cd "$(dirname "$0")" && pwd)
 build=$(cd "${1:?usage: compare_symmetry_peers.sh BUILD_DIR [SHARED_DIR] [OUT_DIR]}" && pwd)
 shared=${2:-$here/../../../shared}
 out=${3:-$(mktemp -d)}
-faust=$shared/data/faust_5k/faust
 tools=$shared/tools
-if [ ! -d "$faust" ] || [ ! -f "$tools/eval_symmetry.py" ]; then
-  echo "compare_symmetry_peers: $faust or $tools absent, skipped"; exit 0
+bench="$build/benchmark/Intrinsic_reflectional_symmetry_3/symmetry_map_benchmark"
+if [ ! -f "$tools/eval_symmetry.py" ]; then
+  echo "compare_symmetry_peers: $tools absent, skipped"; exit 0
 fi
+
+# side_by_side MESH_DIR GT_DIR MAP_DIR: one row per mesh of MESH_DIR, the CR of
+# our map, of our C++ metric (MAP_DIR/ours_cpp.txt), of GPS and of the plane
+side_by_side() {
+  local meshes=$1 gt=$2 maps=$3
+  cr() { "$py" "$tools/eval_symmetry.py" "$meshes/$1.off" "$gt/$1.vts" "$gt/$1.sym.vts" "$2" --json \
+         | "$py" -c 'import json,sys; print("%.2f" % json.loads(sys.stdin.read())["CR"])'; }
+  printf "%-12s %10s %10s %10s %10s\n" shape ours ours_cpp GPS extrinsic
+  for off in "$meshes"/*.off; do
+    local name
+    name=$(basename "$off" .off)
+    [ -f "$maps/$name.map" ] || continue
+    [ -f "$maps/$name.gps.map" ] || "$py" "$tools/baseline_gps.py" "$off" "$maps/$name.gps.map" > /dev/null
+    [ -f "$maps/$name.ext.map" ] || "$py" "$tools/baseline_extrinsic.py" "$off" "$maps/$name.ext.map" > /dev/null
+    printf "%-12s %10s %10s %10s %10s\n" "$name" "$(cr "$name" "$maps/$name.map")" \
+      "$(awk -v n="$name" '$1 == n { print $6 }' "$maps/ours_cpp.txt")" \
+      "$(cr "$name" "$maps/$name.gps.map")" "$(cr "$name" "$maps/$name.ext.map")"
+  done | tee "$maps/table.txt"
+}
+
+# means of the columns of a table, over all rows and, for FAUST, by group: pose
+# 0 of each subject (tr_reg_0X0), the posed shapes (tr_reg_001..009, all of
+# subject 0) and their own pose 0 (tr_reg_000)
+means() {
+  awk -v groups="$2" '
+    function add(g) { for(i = 2; i <= 5; ++i) s[g, i] += $i; n[g]++ }
+    function line(g, label) { if(n[g]) printf "%-12s %10.2f %10.2f %10.2f %10.2f   (mean CR %%, n=%d)\n",
+                                label, s[g, 2]/n[g], s[g, 3]/n[g], s[g, 4]/n[g], s[g, 5]/n[g], n[g] }
+    NR > 1 { add("all"); if(groups) { id = substr($1, length($1) - 2) + 0; add(id % 10 == 0 ? "rest" : "posed"); if(id == 0) add("own") } }
+    END { line("all", "mean"); line("rest", "pose 0"); line("posed", "posed"); line("own", "tr_reg_000") }' "$1"
+}
+
 mkdir -p "$out"
-"$build/benchmark/Intrinsic_reflectional_symmetry_3/symmetry_map_benchmark" "$shared/data" --no-scape \
-  --write "$out" > "$out/ours_cpp.txt"
-cr() { "$py" "$tools/eval_symmetry.py" "$faust/$1.off" "$faust/corres/$1.vts" "$faust/corres/$1.sym.vts" "$2" --json \
-       | "$py" -c 'import json,sys; print("%.2f" % json.loads(sys.stdin.read())["CR"])'; }
-printf "%-12s %10s %10s %10s %10s\n" shape ours ours_cpp GPS extrinsic
-for off in "$faust"/*.off; do
-  name=$(basename "$off" .off)
-  [ -f "$out/$name.gps.map" ] || "$py" "$tools/baseline_gps.py" "$off" "$out/$name.gps.map" > /dev/null
-  [ -f "$out/$name.ext.map" ] || "$py" "$tools/baseline_extrinsic.py" "$off" "$out/$name.ext.map" > /dev/null
-  cpp=$(awk -v n="$name" '$1 == n { print $6 }' "$out/ours_cpp.txt")
-  printf "%-12s %10s %10s %10s %10s\n" "$name" "$(cr "$name" "$out/$name.map")" "$cpp" \
-    "$(cr "$name" "$out/$name.gps.map")" "$(cr "$name" "$out/$name.ext.map")"
-done | tee "$out/table.txt"
-awk '{ for(i = 2; i <= 5; ++i) s[i] += $i; n++ }
-     END { printf "%-12s %10.2f %10.2f %10.2f %10.2f   (mean CR %%, n=%d)\n", "mean", s[2]/n, s[3]/n, s[4]/n, s[5]/n, n }' \
-  "$out/table.txt"
+faust=$shared/data/faust_5k/faust
+if [ -d "$faust" ]; then
+  echo "FAUST ($faust)"
+  "$bench" "$shared/data" --no-scape --write "$out" > "$out/ours_cpp.txt"
+  side_by_side "$faust" "$faust/corres" "$out"
+  means "$out/table.txt" 1
+else
+  echo "FAUST: $faust absent, skipped"
+fi
+
+scape=$shared/data/kim_bim_benchmark/scape
+if [ -d "$scape/meshes" ]; then
+  echo; echo "SCAPE ($scape, sparse ground truth: 44 checks per mesh)"
+  mkdir -p "$out/scape"
+  "$bench" "$shared/data" --no-faust --write "$out/scape" > "$out/scape/ours_cpp.txt"
+  side_by_side "$out/scape" "$out/scape" "$out/scape"
+  means "$out/scape/table.txt" ""
+else
+  echo "SCAPE: $scape/meshes absent, skipped"
+fi

@@ -35,16 +35,21 @@
 // protocol's figure.
 //
 // usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--similarity EPS_SIM]
-//                               [--seed S] [--write DIR] [--threads T] [--no-scape] [--no-faust]
+//                               [--seed S | --seeds S1,S2,...] [--write DIR] [--threads T]
+//                               [--no-scape] [--no-faust]
 //   DATA_DIR  default ../shared/data (relative to the current directory);
 //             faust_5k/ and kim_bim_benchmark/ inside it, each skipped if absent
 //   N         samples per shape (default 1000)
 //   NAME      only the shapes whose name contains NAME
 //   S         seed of the farthest-point samples (default 0): the spread of the
-//             figures over seeds tells a real difference from a sampling accident
+//             figures over seeds tells a real difference from a sampling accident;
+//             with --seeds, everything runs once per seed and a last table gives,
+//             per seed and on average, FAUST's mean CR by group, and the posed
+//             shapes against their own subject's rest pose (tr_reg_000)
 //   DIR       write NAME.map (partner per vertex, -1 for none) and
 //             NAME.curves (one curve per line) there, the input formats of
-//             eval_symmetry.py (for SCAPE: of the mended mesh, written as NAME.off)
+//             eval_symmetry.py (for SCAPE: of the mended mesh, written as NAME.off);
+//             with several seeds, in DIR/seed_S
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
@@ -97,6 +102,7 @@ struct Options
   std::size_t samples = 1000;
   double similarity = -1.; // < 0: the package's default
   unsigned seed = 0;
+  std::vector<unsigned> seeds{0}; // --seeds: one run per seed
   std::string only, write;
   int threads = 0;
   bool faust = true, scape = true;
@@ -381,13 +387,19 @@ struct Summary
   }
 };
 
-void run_faust(const Options& o)
+// FAUST's mean CR by group, for the comparison over seeds
+struct Faust_means
+{
+  double all = 0., rest = 0., posed = 0., subject0_rest = 0.;
+};
+
+Faust_means run_faust(const Options& o)
 {
   const fs::path dir = fs::path(o.data) / "faust_5k" / "faust";
   if(!fs::is_directory(dir))
   {
     std::cout << "FAUST: " << dir.string() << " not found, skipped\n";
-    return;
+    return Faust_means();
   }
   std::vector<std::string> names;
   for(const auto& entry : fs::directory_iterator(dir))
@@ -431,6 +443,37 @@ void run_faust(const Options& o)
   // without the differences between bodies
   subject0_rest.print("FAUST, subject 0 pose 0 (tr_reg_000)");
   std::cout << "peers on the same 19 shapes (../shared/tools/README.md): GPS 93.6 % CR, extrinsic mirror plane 88.6 % CR\n";
+  Faust_means means;
+  means.all = Summary::mean(all.cr);
+  means.rest = Summary::mean(rest.cr);
+  means.posed = Summary::mean(posed.cr);
+  means.subject0_rest = Summary::mean(subject0_rest.cr);
+  return means;
+}
+
+void print_faust_over_seeds(const std::vector<unsigned>& seeds, const std::vector<Faust_means>& runs)
+{
+  std::cout << "\nFAUST over " << seeds.size() << " seeds, mean CR % by group; the posed shapes are all of subject 0,\n"
+            << "so 'posed - own rest' compares each pose with the same body in pose 0 (tr_reg_000)\n"
+            << std::right << std::setw(6) << "seed" << std::setw(8) << "all" << std::setw(13) << "pose 0 (0X0)"
+            << std::setw(16) << "posed (001-009)" << std::setw(15) << "own rest (000)" << std::setw(18)
+            << "posed - own rest" << std::setw(17) << "posed - pose 0" << '\n';
+  Faust_means sum;
+  auto row = [](const std::string& label, const Faust_means& f) {
+    std::cout << std::setw(6) << label << std::fixed << std::setprecision(2) << std::setw(8) << f.all << std::setw(13)
+              << f.rest << std::setw(16) << f.posed << std::setw(15) << f.subject0_rest << std::showpos
+              << std::setw(18) << f.posed - f.subject0_rest << std::setw(17) << f.posed - f.rest << std::noshowpos
+              << '\n';
+  };
+  for(std::size_t i = 0; i < seeds.size(); ++i)
+  {
+    row(std::to_string(seeds[i]), runs[i]);
+    sum.all += runs[i].all / double(seeds.size());
+    sum.rest += runs[i].rest / double(seeds.size());
+    sum.posed += runs[i].posed / double(seeds.size());
+    sum.subject0_rest += runs[i].subject0_rest / double(seeds.size());
+  }
+  row("mean", sum);
 }
 
 void run_scape(const Options& o)
@@ -508,6 +551,13 @@ void run_scape(const Options& o)
   all.print("SCAPE, all meshes");
 }
 
+std::string seed_list(const std::vector<unsigned>& seeds)
+{
+  std::string text;
+  for(unsigned seed : seeds) text += (text.empty() ? "" : ",") + std::to_string(seed);
+  return text;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -523,7 +573,15 @@ int main(int argc, char** argv)
     if(a == "--samples") o.samples = std::size_t(std::max(1L, std::atol(value().c_str())));
     else if(a == "--only") o.only = value();
     else if(a == "--similarity") o.similarity = std::atof(value().c_str());
-    else if(a == "--seed") o.seed = unsigned(std::strtoul(value().c_str(), nullptr, 10));
+    else if(a == "--seed") o.seeds = {unsigned(std::strtoul(value().c_str(), nullptr, 10))};
+    else if(a == "--seeds")
+    {
+      o.seeds.clear();
+      std::istringstream list(value());
+      for(std::string item; std::getline(list, item, ',');)
+        o.seeds.push_back(unsigned(std::strtoul(item.c_str(), nullptr, 10)));
+      if(o.seeds.empty()) { std::cerr << "--seeds expects a list such as 0,1,2\n"; return 1; }
+    }
     else if(a == "--write") o.write = value();
     else if(a == "--threads") o.threads = std::atoi(value().c_str());
     else if(a == "--no-scape") o.scape = false;
@@ -531,7 +589,7 @@ int main(int argc, char** argv)
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--write DIR] "
-                   "[--threads T] [--similarity EPS_SIM] [--seed S] [--no-scape] [--no-faust]\n";
+                   "[--threads T] [--similarity EPS_SIM] [--seed S | --seeds S1,S2,...] [--no-scape] [--no-faust]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }
@@ -543,7 +601,7 @@ int main(int argc, char** argv)
     control = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
 #endif
   std::cout << "symmetric map benchmark: data " << o.data << ", " << o.samples
-            << " samples per shape (seed " << o.seed << "), package defaults otherwise; e = geodesic error / sqrt(area), CR = % e <= "
+            << " samples per shape (seed" << (o.seeds.size() > 1 ? "s " : " ") << seed_list(o.seeds) << "), package defaults otherwise; e = geodesic error / sqrt(area), CR = % e <= "
             << std::setprecision(4) << kim_threshold << " (unmapped = failure), axis = distance from the "
             << "ground-truth axis points to the top curve / sqrt(area); times in seconds (wall clock)\n";
   if(!fs::is_directory(o.data))
@@ -551,7 +609,23 @@ int main(int argc, char** argv)
     std::cout << "data directory " << o.data << " not found: nothing to do\n";
     return 0;
   }
-  if(o.faust) run_faust(o);
-  if(o.scape) run_scape(o);
+  std::vector<Faust_means> faust_runs;
+  for(unsigned seed : o.seeds)
+  {
+    Options run = o;
+    run.seed = seed;
+    if(o.seeds.size() > 1)
+    {
+      std::cout << "\n=== seed " << seed << " ===\n";
+      if(!o.write.empty())
+      {
+        run.write = (fs::path(o.write) / ("seed_" + std::to_string(seed))).string();
+        fs::create_directories(run.write);
+      }
+    }
+    if(o.faust) faust_runs.push_back(run_faust(run));
+    if(o.scape) run_scape(run);
+  }
+  if(o.faust && o.seeds.size() > 1) print_faust_over_seeds(o.seeds, faust_runs);
   return 0;
 }

@@ -48,7 +48,7 @@ means() {
     function add(g) { for(i = 2; i <= 5; ++i) s[g, i] += $i; n[g]++ }
     function line(g, label) { if(n[g]) printf "%-12s %10.2f %10.2f %10.2f %10.2f   (mean CR %%, n=%d)\n",
                                 label, s[g, 2]/n[g], s[g, 3]/n[g], s[g, 4]/n[g], s[g, 5]/n[g], n[g] }
-    NR > 1 { add("all"); if(groups) { id = substr($1, length($1) - 2) + 0; add(id % 10 == 0 ? "rest" : "posed"); if(id == 0) add("own") } }
+    { add("all"); if(groups) { id = substr($1, length($1) - 2) + 0; add(id % 10 == 0 ? "rest" : "posed"); if(id == 0) add("own") } }
     END { line("all", "mean"); line("rest", "pose 0"); line("posed", "posed"); line("own", "tr_reg_000") }' "$1"
 }
 

@@ -43,6 +43,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -971,6 +972,129 @@ TEST(Curves, ParametersChangeWhatTheySay)
   // closing: curves stay connected polylines
   const auto closed = run(IRS::parameters::pruning_threshold(0.9).close_curves(true));
   for(const auto& c : closed) expect_polylines_are_connected(shape.mesh, c);
+}
+
+// ---------------------------------------------------------------- the callback
+
+// What a `callback` named parameter sees: the advancements it is called with,
+// and whether it asks to stop once one reaches `stop_at` (> 1: never). The
+// functions serialise the calls, so the vector needs no lock.
+struct Recording_callback
+{
+  std::shared_ptr<std::vector<double>> seen = std::make_shared<std::vector<double>>();
+  double stop_at = 2.;
+  bool operator()(double x) const
+  {
+    seen->push_back(x);
+    return x < stop_at;
+  }
+  // called at least once, with non-decreasing values in [0, 1] ending at 1
+  void expect_complete() const
+  {
+    ASSERT_FALSE(seen->empty());
+    for(std::size_t i = 0; i < seen->size(); ++i)
+    {
+      EXPECT_GE((*seen)[i], 0.);
+      EXPECT_LE((*seen)[i], 1.);
+      if(i > 0) EXPECT_GE((*seen)[i], (*seen)[i - 1]);
+    }
+    EXPECT_EQ(seen->back(), 1.);
+  }
+};
+
+template <typename F>
+void expect_cancelled(F f, const std::string& function)
+{
+  try
+  {
+    f();
+    ADD_FAILURE() << function << ": no Operation_cancelled";
+  }
+  catch(const IRS::Operation_cancelled& e)
+  {
+    EXPECT_NE(std::string(e.what()).find(function), std::string::npos) << e.what();
+  }
+}
+
+// Every long function reports its advancement to `callback`, stops when it
+// returns false (Operation_cancelled naming the function, at the first call
+// or half-way, in parallel and sequentially), and gives the same result with
+// a callback as without.
+TEST(Curves, CallbackReportsAndCancels)
+{
+  const auto shape = IRS::generate_snowman<Mesh>(1200);
+  const Mesh& tm = shape.mesh;
+  Pipeline<Mesh> p;
+  p.run(tm, 250, shape.symmetries, {0});
+  ASSERT_FALSE(p.curves.empty());
+  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(tm);
+  auto tau_map = get(CGAL::dynamic_vertex_property_t<double>(), tm);
+  auto pmap = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), tm);
+  auto rmap = get(CGAL::dynamic_face_property_t<int>(), tm);
+
+  for(double stop_at : {2., 0., 0.5})
+  {
+    SCOPED_TRACE("stop at " + std::to_string(stop_at));
+    const bool stops = stop_at <= 1.;
+    Recording_callback geodesics, voting, curves, map, regions;
+    geodesics.stop_at = voting.stop_at = curves.stop_at = map.stop_at = regions.stop_at = stop_at;
+
+    IRS::Geodesic_distance_matrix D;
+    auto compute_geodesics = [&] {
+      D = IRS::compute_geodesic_distance_matrix(oracle, p.D.sources(), IRS::parameters::callback(geodesics));
+    };
+    IRS::Irsa_voting_result vr;
+    auto vote = [&] {
+      vr = IRS::compute_irsa_transform<CGAL::Sequential_tag>(
+        tm, p.D, p.similar, tau_map,
+        IRS::parameters::maximum_number_of_voting_pairs(std::size_t(3000)).random_seed(3u).callback(voting));
+    };
+    std::vector<IRS::Irsa_curve> cs;
+    auto extract = [&] {
+      for(auto v : vertices(tm)) put(tau_map, v, p.tau[v.idx()]);
+      IRS::extract_irsa_curves(tm, p.D, p.voting, tau_map, std::back_inserter(cs), IRS::parameters::callback(curves));
+    };
+    auto mirror = [&] { IRS::symmetric_vertex_map(tm, p.D, p.curves, pmap, IRS::parameters::callback(map)); };
+    auto grow = [&] { IRS::symmetric_regions(tm, p.D, p.curves, rmap, IRS::parameters::callback(regions)); };
+
+    if(stops)
+    {
+      expect_cancelled(compute_geodesics, "compute_geodesic_distance_matrix");
+      expect_cancelled(vote, "compute_irsa_transform");
+      expect_cancelled(extract, "extract_irsa_curves");
+      expect_cancelled(mirror, "symmetric_vertex_map");
+      expect_cancelled(grow, "symmetric_regions");
+      // nothing is reported after the callback said stop
+      for(const Recording_callback* r : {&geodesics, &voting, &curves, &map, &regions})
+      {
+        ASSERT_FALSE(r->seen->empty());
+        EXPECT_GE(r->seen->back(), stop_at);
+        EXPECT_EQ(std::count_if(r->seen->begin(), r->seen->end(), [&](double x) { return x >= stop_at; }), 1);
+      }
+      continue;
+    }
+    compute_geodesics();
+    vote();
+    extract();
+    mirror();
+    grow();
+    for(const Recording_callback* r : {&geodesics, &voting, &curves, &map, &regions})
+      r->expect_complete();
+    EXPECT_GT(voting.seen->size(), 2u); // reported along the way, not only at the end
+    EXPECT_GT(geodesics.seen->size(), 2u);
+    std::cout << "[ callback ] calls: geodesics " << geodesics.seen->size() << ", voting " << voting.seen->size()
+              << ", curves " << curves.seen->size() << ", map " << map.seen->size() << ", regions "
+              << regions.seen->size() << std::endl;
+    // the same results as without a callback
+    for(std::size_t i = 0; i < D.number_of_sources(); ++i)
+      EXPECT_TRUE(std::equal(D.row(i), D.row(i) + D.number_of_vertices(), p.D.row(i)));
+    for(auto v : vertices(tm)) ASSERT_EQ(get(tau_map, v), p.tau[v.idx()]);
+    EXPECT_EQ(vr.voting_pairs.size(), p.voting.voting_pairs.size());
+    ASSERT_EQ(cs.size(), p.curves.size());
+    for(std::size_t c = 0; c < cs.size(); ++c) EXPECT_EQ(cs[c].polylines, p.curves[c].polylines);
+    for(auto v : vertices(tm)) EXPECT_EQ(get(pmap, v), p.partner[v.idx()]);
+    for(auto f : faces(tm)) EXPECT_EQ(get(rmap, f), p.face_region[f.idx()]);
+  }
 }
 
 // ---------------------------------------------------------------- errors

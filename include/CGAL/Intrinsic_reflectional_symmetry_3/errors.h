@@ -74,6 +74,16 @@ private:
   std::size_t element_;
 };
 
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// What a function of the package throws when its `callback` named parameter
+/// returns false: the computation stops there and returns nothing. `what()`
+/// names the function that stopped.
+class Operation_cancelled : public std::runtime_error
+{
+public:
+  explicit Operation_cancelled(const std::string& message) : std::runtime_error(message) {}
+};
+
 } // namespace Intrinsic_reflectional_symmetry_3
 } // namespace CGAL
 

@@ -8,6 +8,8 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/errors.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/parameters.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/progress.h>
 #include <CGAL/for_each.h>
 #include <CGAL/tags.h>
 
@@ -73,10 +75,23 @@ private:
 /// the result is the same at any thread count.
 ///
 /// \tparam GeodesicOracle a model of `GeodesicDistanceOracle`
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{called with the advancement (between 0 and 1) as rows are done, never
+///       twice at once; returning `false` stops the computation}
+///     \cgalParamType{a model of `std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
 /// \throws Input_error (`invalid_parameter`) if a source index is not a vertex index
-template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename GeodesicOracle>
+/// \throws Operation_cancelled if the callback returns `false`
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename GeodesicOracle,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
 Geodesic_distance_matrix
-compute_geodesic_distance_matrix(const GeodesicOracle& oracle, const std::vector<std::size_t>& sources)
+compute_geodesic_distance_matrix(const GeodesicOracle& oracle, const std::vector<std::size_t>& sources,
+                                 const CGAL_NP_CLASS& np = parameters::default_values())
 {
 #ifndef CGAL_LINKED_WITH_TBB
   static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
@@ -92,10 +107,15 @@ compute_geodesic_distance_matrix(const GeodesicOracle& oracle, const std::vector
   Geodesic_distance_matrix matrix(sources, n);
   std::vector<std::size_t> rows(sources.size());
   std::iota(rows.begin(), rows.end(), std::size_t(0));
+  internal::Progress progress(internal::progress_callback(np), "compute_geodesic_distance_matrix()");
+  internal::Progress_counter counter(progress, 0., 1., rows.size());
   CGAL::for_each<ConcurrencyTag>(rows, [&](std::size_t i) {
+    if(counter.stopped()) return true; // skip the remaining rows
     oracle.distances_from(sources[i], matrix.row(i));
+    counter.advance();
     return true;
   });
+  progress.step(1.);
   return matrix;
 }
 

@@ -13,6 +13,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/parameters.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_extraction.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_mesh.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/progress.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
@@ -355,6 +356,12 @@ inline Irsa_curve to_irsa_curve(const Working_curve& w, const Irsa_voting_result
 ///     \cgalParamType{std::size_t}
 ///     \cgalParamDefault{10}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{called with the advancement (between 0 and 1) after each step; returning
+///       `false` stops the extraction}
+///     \cgalParamType{a model of `std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{pruning_threshold}
 ///     \cgalParamDescription{curve vertices whose support, divided by the curve's largest support, is
 ///       below this value are cut}
@@ -403,6 +410,7 @@ inline Irsa_curve to_irsa_curve(const Working_curve& w, const Irsa_voting_result
 /// \cgalNamedParamsEnd
 ///
 /// \returns the output iterator past the last curve
+/// \throws Operation_cancelled if the callback returns `false`
 /// \throws Input_error (`invalid_parameter`) if `D` or `voting` do not match
 ///         `tm`, or a parameter is out of range; (`not_triangle_mesh`) if a
 ///         face is not a triangle
@@ -429,10 +437,16 @@ OutputIterator extract_irsa_curves(const TriangleMesh& tm, const Geodesic_distan
     t[std::size_t(get(vim, v))] = std::isfinite(x) ? x : 0.;
   }
 
+  // the callback sees the end of each step
+  internal::Progress progress(internal::progress_callback(np), "extract_irsa_curves()");
   internal::Boundary_ranking ranking(m, D, voting, t, st);
+  progress.step(0.1);
   std::vector<internal::Working_curve> curves = internal::select_initial_curves(ranking, st);
+  progress.step(0.3);
   internal::refine_curves<ConcurrencyTag>(m, D, st, curves, st.nested_symmetries ? &ranking : nullptr);
+  progress.step(0.9);
   internal::prune_curves(m, D, st, curves);
+  progress.step(1.);
   for(const auto& c : curves)
     *out++ = internal::to_irsa_curve(c, voting);
   return out;

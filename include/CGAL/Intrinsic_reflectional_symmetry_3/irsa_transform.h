@@ -10,6 +10,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/errors.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/parameters.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/progress.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/voting_common.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/voting_kernel.h>
 
@@ -26,6 +27,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <memory>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -99,10 +102,12 @@ void fill_result_header(const Voting_setup& s, Result& r)
 
 // Runs the fast voting of every voting pair and sums tau in pair order.
 // `index`: the (mesh, D) index of a previous transform on the same mesh and
-// matrix, or nullptr (it is then built here).
+// matrix, or nullptr (it is then built here). `progress`: the callback, or
+// nullptr; once it asks to stop, the remaining pairs are skipped and the
+// result is incomplete (the caller throws).
 template <class ConcurrencyTag>
 Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& tau, int number_of_threads,
-                                   const Voting_index* index = nullptr)
+                                   const Voting_index* index = nullptr, Progress* progress = nullptr)
 {
   Irsa_voting_result result;
   fill_result_header(s, result);
@@ -123,13 +128,20 @@ Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& t
   // allocations), in two passes: beta and m for every pair, then the filters
   // and mu with the pairs grouped by midpoint, so that each column D(., m)
   // (a cache miss per sample) is read once per midpoint, not once per pair.
+  Progress no_callback{Progress::Callback(), std::string()};
+  Progress& p = progress != nullptr ? *progress : no_callback;
+  // advancement: the boundaries up to 0.3, the support of the pairs that have one up to 1
+  Progress_counter first_count(p, 0., 0.3, nvote);
+  std::unique_ptr<Progress_counter> second_count;
   auto run = [&] {
     const Fast_voting fv(s, parallel, index);
     auto first_pass = [&](std::size_t k, Fast_voting::Scratch& sc) {
+      if(p.stopped()) return;
       Irsa_voting_pair& r = records[k];
       r.a = s.similar_pairs[s.voting_pairs[k]].first;
       r.b = s.similar_pairs[s.voting_pairs[k]].second;
       outcome[k] = (unsigned char)fv.boundary_and_midpoint(r.a, r.b, sc, r.midpoint, r.boundary);
+      first_count.advance();
     };
     std::vector<std::size_t> by_midpoint, group_start;
     auto group = [&] {
@@ -142,8 +154,10 @@ Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& t
         if(i == 0 || records[by_midpoint[i]].midpoint != records[by_midpoint[i - 1]].midpoint)
           group_start.push_back(i);
       group_start.push_back(by_midpoint.size());
+      second_count.reset(new Progress_counter(p, 0.3, 1., by_midpoint.size()));
     };
     auto second_pass = [&](std::size_t g, Fast_voting::Scratch& sc) {
+      if(p.stopped()) return;
       fv.load_midpoint(records[by_midpoint[group_start[g]]].midpoint, sc);
       for(std::size_t i = group_start[g]; i < group_start[g + 1]; ++i)
       {
@@ -156,6 +170,7 @@ Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& t
           std::vector<double>().swap(r.support);
         }
       }
+      second_count->advance(group_start[g + 1] - group_start[g]);
     };
 #ifdef CGAL_LINKED_WITH_TBB
     if(parallel)
@@ -199,6 +214,7 @@ Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& t
     (void)number_of_threads;
     run();
   }
+  if(p.stopped()) return result; // incomplete: the caller throws
 
   // deterministic reduction: pairs in canonical order, boundary in order
   for(std::size_t k = 0; k < nvote; ++k)
@@ -382,6 +398,12 @@ Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& t
 ///     \cgalParamType{int}
 ///     \cgalParamDefault{0}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{called with the advancement (between 0 and 1) as the voting pairs are done,
+///       never twice at once; returning `false` stops the voting}
+///     \cgalParamType{a model of `std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{a property map associating points to the vertices of `tm` (for the mean edge length)}
 ///     \cgalParamType{a model of `ReadablePropertyMap`}
@@ -396,6 +418,7 @@ Irsa_voting_result run_fast_voting(const Voting_setup& s, std::vector<double>& t
 /// \cgalNamedParamsEnd
 ///
 /// \returns the voting pairs that voted (boundary, support, eligible pairs) and statistics
+/// \throws Operation_cancelled if the callback returns `false`
 /// \throws Input_error (`invalid_parameter`) if `D` does not match `tm`, a pair
 ///         index is out of range or pairs a sample with itself, or a parameter
 ///         is out of range
@@ -421,7 +444,9 @@ compute_irsa_transform(const TriangleMesh& tm, const Geodesic_distance_matrix& D
   const double setup_seconds = timer.time();
 
   std::vector<double> values;
-  Irsa_voting_result result = internal::run_fast_voting<ConcurrencyTag>(setup, values, threads);
+  internal::Progress progress(internal::progress_callback(np), "compute_irsa_transform()");
+  Irsa_voting_result result = internal::run_fast_voting<ConcurrencyTag>(setup, values, threads, nullptr, &progress);
+  progress.step(1.);
   result.setup_seconds = setup_seconds;
   result.voting_seconds = timer.time() - setup_seconds;
 

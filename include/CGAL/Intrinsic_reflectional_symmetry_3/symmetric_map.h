@@ -159,6 +159,12 @@ Region_growing_result grow_symmetric_regions(const TriangleMesh& tm, const Geode
 ///     \cgalParamType{double >= 0}
 ///     \cgalParamDefault{the voting's default}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{called with the advancement (between 0 and 1) when the regions are grown;
+///       returning `false` stops the function}
+///     \cgalParamType{a model of `std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
 ///     \cgalParamType{a model of `ReadablePropertyMap`}
@@ -177,6 +183,7 @@ Region_growing_result grow_symmetric_regions(const TriangleMesh& tm, const Geode
 /// \cgalNamedParamsEnd
 ///
 /// \returns the number of faces in a region
+/// \throws Operation_cancelled if the callback returns `false`
 /// \throws Input_error (`invalid_parameter`) if `D` or a curve does not match `tm`, or if a named
 /// parameter is out of range (also `number_of_local_rounds` and `number_of_eigenfunctions`, checked
 /// here as in `symmetric_vertex_map()` so that one set of parameters serves both)
@@ -188,7 +195,9 @@ std::size_t symmetric_regions(const TriangleMesh& tm, const Geodesic_distance_ma
   internal::Curves_mesh m;
   std::vector<const Irsa_curve*> cs;
   internal::Region_settings rs;
+  internal::Progress progress(internal::progress_callback(np), "symmetric_regions()");
   const internal::Region_growing_result rg = internal::grow_symmetric_regions<ConcurrencyTag>(tm, D, curves, np, m, cs, rs);
+  progress.step(1.);
   const std::vector<int> fl = internal::face_labels(m, rg);
 
   typedef typename boost::property_traits<FaceRegionMap>::value_type Value;
@@ -220,13 +229,24 @@ std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance
   internal::Curves_mesh m;
   std::vector<const Irsa_curve*> cs;
   internal::Region_settings rs;
+  internal::Progress progress(internal::progress_callback(np), "symmetric_vertex_map()");
   const internal::Region_growing_result rg = internal::grow_symmetric_regions<ConcurrencyTag>(
     tm, D, curves, np, m, cs, rs, true,
     for_detection ? default_symmetry_tolerance : default_region_symmetry_tolerance);
   if(for_detection) rs.local_rounds = rs.eigenfunctions = 0;
+  // advancement: the regions up to 0.1, then each region's map by its share of the labelled vertices
+  progress.step(0.1);
+  std::vector<std::size_t> region_size(cs.size() + 1, 0);
+  for(int l : rg.label)
+    if(l >= 0) ++region_size[std::size_t(l) + 1];
+  for(std::size_t c = 1; c < region_size.size(); ++c) region_size[c] += region_size[c - 1];
+  const double labelled = double((std::max)(region_size.back(), std::size_t(1)));
   std::vector<std::ptrdiff_t> p(m.number_of_vertices, -1);
   for(std::size_t c = 0; c < cs.size(); ++c)
-    internal::dense_region_map<ConcurrencyTag>(m, D, *cs[c], rg.label, int(c), rs, p);
+    internal::dense_region_map<ConcurrencyTag>(m, D, *cs[c], rg.label, int(c), rs, p, &progress,
+                                               0.1 + 0.9 * double(region_size[c]) / labelled,
+                                               0.1 + 0.9 * double(region_size[c + 1]) / labelled);
+  progress.step(1.);
 
   typedef typename boost::property_traits<VertexPartnerMap>::value_type Value;
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
@@ -358,6 +378,12 @@ std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance
 ///     \cgalParamType{double >= 0}
 ///     \cgalParamDefault{the voting's default}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{called with the advancement (between 0 and 1) after the regions and after
+///       each step of each region's map, never twice at once; returning `false` stops the function}
+///     \cgalParamType{a model of `std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
 ///     \cgalParamType{a model of `ReadablePropertyMap`}
@@ -376,6 +402,7 @@ std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance
 /// \cgalNamedParamsEnd
 ///
 /// \returns the number of vertices with a partner
+/// \throws Operation_cancelled if the callback returns `false`
 /// \throws Input_error (`invalid_parameter`) if `D` or a curve does not match
 ///         `tm`, or a parameter is out of range
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh, typename CurveRange,

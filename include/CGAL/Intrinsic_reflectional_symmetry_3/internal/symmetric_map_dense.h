@@ -13,6 +13,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_mirror.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_extraction.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_regions.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/progress.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/symmetric_map_spectral.h>
 
 #include <algorithm>
@@ -220,8 +221,13 @@ mutual_sample_pairs(const Geodesic_distance_matrix& D, const std::vector<std::si
 template <class ConcurrencyTag>
 void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, const Irsa_curve& curve,
                       const std::vector<int>& label, int region, const Region_settings& st,
-                      std::vector<std::ptrdiff_t>& partner)
+                      std::vector<std::ptrdiff_t>& partner, Progress* progress = nullptr,
+                      double progress_from = 0., double progress_to = 1.)
 {
+  // the callback sees the end of each step, as a share of [progress_from, progress_to]
+  auto step = [&](double share) {
+    if(progress != nullptr) progress->step(progress_from + share * (progress_to - progress_from));
+  };
   std::vector<std::size_t> verts;
   for(std::size_t v = 0; v < m.number_of_vertices; ++v)
     if(label[v] == region) verts.push_back(v);
@@ -234,6 +240,7 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
   std::vector<std::size_t> best;
   std::vector<double> residual;
   Mirror_matcher(D, landmarks).template best_partners<ConcurrencyTag>(verts, verts, best, residual);
+  step(0.2);
 
   // slot of each vertex in `verts`
   std::vector<std::size_t> slot(m.number_of_vertices, Mirror_matcher::none);
@@ -271,6 +278,7 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
     const Mirror_matcher mm(D, landmarks);
     const double sigma = 3. * std::sqrt(region_area / double(2 * mm.number_of_landmarks()));
     local_best_partners<ConcurrencyTag>(mm, verts, verts, sigma, best, residual);
+    step(0.2 + 0.4 * double(round + 1) / double(st.local_rounds));
   }
 
   // Then the spectral refinement (symmetric_map_spectral.h), where no vertex
@@ -302,6 +310,7 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
         if(best[i] != Mirror_matcher::none) residual[i] = mm.residual(verts[i], best[i]);
     }
   }
+  step(0.95);
 
   std::vector<std::size_t> by_cost;
   for(std::size_t i = 0; i < verts.size(); ++i)

@@ -173,17 +173,19 @@ void nearest_rows(const Eigen::MatrixXd& P, const Eigen::MatrixXd& C, const std:
   CGAL::for_each<ConcurrencyTag>(blocks, [&](std::size_t b) {
     const Eigen::Index r0 = Eigen::Index(b * block);
     const Eigen::Index nr = (std::min)(Eigen::Index(block), Eigen::Index(query.size()) - r0);
-    const Eigen::MatrixXf S = Q.middleRows(r0, nr) * Pf.transpose();
+    // one column per query, so that each query's scan reads contiguous memory
+    const Eigen::MatrixXf S = Pf * Q.middleRows(r0, nr).transpose();
     for(Eigen::Index i = 0; i < nr; ++i)
     {
       // |P_j - Q_i|^2 - |Q_i|^2
       const std::size_t r = query[std::size_t(r0 + i)];
       const int own = side != nullptr ? (*side)[r] : 0;
+      const float* column = S.col(i).data();
       float best = std::numeric_limits<float>::infinity(), best_same = best;
       std::size_t arg = std::size_t(n), arg_same = 0;
       for(Eigen::Index j = 0; j < n; ++j)
       {
-        const float d = norms[j] - 2.f * S(i, j);
+        const float d = norms[j] - 2.f * column[j];
         if(own != 0 && (*side)[std::size_t(j)] == own)
         {
           if(d < best_same) { best_same = d; arg_same = std::size_t(j); }

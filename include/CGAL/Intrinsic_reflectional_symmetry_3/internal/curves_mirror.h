@@ -219,9 +219,14 @@ private:
 ///   E_w(x, y) = sum_k w_k(x) ((d(x,p_k) - d(y,q_k))^2 + (d(x,q_k) - d(y,p_k))^2),
 ///   w_k(x) = exp(-(min(d(x,p_k), d(x,q_k)) / sigma)^2),
 /// landmarks farther than 3 sigma ignored, and `residual[i]` becomes
-/// sqrt(E_w / (2 sum w)). The search is exhaustive, the current `best[i]`
-/// first and the landmarks by decreasing weight, so that most candidates are
-/// rejected after a few terms. A vertex with fewer than 3 landmarks within
+/// sqrt(E_w / (2 sum w)). The search is exhaustive and exact, landmark by
+/// landmark over all candidates at once (by decreasing weight, so that most
+/// candidates are rejected after a few terms, each term read from a
+/// landmark-major copy of the candidates' distances, contiguous in memory):
+/// a candidate leaves as soon as its partial sum exceeds E_w of the current
+/// `best[i]`. Every remaining candidate's sum is then complete, and added in
+/// the same order as a candidate-by-candidate scan would add it, so the
+/// result is that scan's. A vertex with fewer than 3 landmarks within
 /// 3 sigma keeps its partner. Ties go to the smaller vertex index.
 template <class ConcurrencyTag>
 void local_best_partners(const Mirror_matcher& mm, const std::vector<std::size_t>& X,
@@ -230,6 +235,14 @@ void local_best_partners(const Mirror_matcher& mm, const std::vector<std::size_t
 {
   const std::size_t K = mm.number_of_landmarks();
   if(K == 0 || !(sigma > 0.)) return;
+  const std::size_t ny = Y.size();
+  // column c of the copy: d(Y[t], p_k) for c = 2k, d(Y[t], q_k) for c = 2k + 1
+  std::vector<float> column(2 * K * ny);
+  for(std::size_t t = 0; t < ny; ++t)
+  {
+    const float* uy = mm.landmark_distances(Y[t]);
+    for(std::size_t c = 0; c < 2 * K; ++c) column[c * ny + t] = uy[c];
+  }
   std::vector<std::size_t> rows(X.size());
   std::iota(rows.begin(), rows.end(), std::size_t(0));
   CGAL::for_each<ConcurrencyTag>(rows, [&](std::size_t i) {
@@ -249,24 +262,41 @@ void local_best_partners(const Mirror_matcher& mm, const std::vector<std::size_t
                                                const std::pair<double, std::size_t>& r) {
       return l.first > r.first || (l.first == r.first && l.second < r.second);
     });
-    auto energy = [&](std::size_t y, double bound) {
-      const float* uy = mm.landmark_distances(y);
-      double e = 0.;
-      for(std::size_t j = 0; j < active.size() && e <= bound; ++j)
-      {
-        const std::size_t k = active[j].second;
-        const double d0 = double(ux[2 * k]) - double(uy[2 * k + 1]);
-        const double d1 = double(ux[2 * k + 1]) - double(uy[2 * k]);
-        e += active[j].first * (d0 * d0 + d1 * d1);
-      }
-      return e;
-    };
+    // E_w of the current partner: the bound every candidate must meet
     std::size_t bj = best[i];
-    double be = energy(bj, std::numeric_limits<double>::infinity());
-    for(std::size_t y : Y)
+    double be = 0.;
     {
-      const double e = energy(y, be);
-      if(e < be || (e == be && y < bj)) { be = e; bj = y; }
+      const float* uy = mm.landmark_distances(bj);
+      for(const auto& wk : active)
+      {
+        const double d0 = double(ux[2 * wk.second]) - double(uy[2 * wk.second + 1]);
+        const double d1 = double(ux[2 * wk.second + 1]) - double(uy[2 * wk.second]);
+        be += wk.first * (d0 * d0 + d1 * d1);
+      }
+    }
+    std::vector<double> e(ny, 0.);
+    std::vector<std::size_t> alive(ny);
+    std::iota(alive.begin(), alive.end(), std::size_t(0));
+    for(const auto& wk : active)
+    {
+      const double w = wk.first, a0 = double(ux[2 * wk.second]), a1 = double(ux[2 * wk.second + 1]);
+      const float* cp = column.data() + (2 * wk.second) * ny;     // d(y, p_k)
+      const float* cq = column.data() + (2 * wk.second + 1) * ny; // d(y, q_k)
+      std::size_t kept = 0;
+      for(std::size_t t : alive)
+      {
+        const double d0 = a0 - double(cq[t]);
+        const double d1 = a1 - double(cp[t]);
+        e[t] += w * (d0 * d0 + d1 * d1);
+        if(e[t] <= be) alive[kept++] = t;
+      }
+      alive.resize(kept);
+      if(alive.empty()) break;
+    }
+    for(std::size_t t : alive)
+    {
+      const std::size_t y = Y[t];
+      if(e[t] < be || (e[t] == be && y < bj)) { be = e[t]; bj = y; }
     }
     best[i] = bj;
     residual[i] = std::sqrt(be / (2. * wsum));

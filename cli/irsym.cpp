@@ -32,9 +32,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <chrono>
 #include <filesystem>
 #include <iomanip>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -83,6 +85,9 @@ usage: irsym MESH --out DIR [options]
                        the mesh the pipeline ran on; not possible is reported, not an error
   --up AXIS            the mesh axis drawn upwards in the pictures: +X, -X, +Y, -Y, +Z
                        (default) or -Z
+  --time-limit S       stop after S seconds (exit status 4), checked during the geodesic
+                       matrix, the voting, the curves and the map (the library's callback);
+                       the other stages run to their end
   --help               this text
 
 outputs in DIR:
@@ -107,7 +112,8 @@ outputs in DIR:
                        the repair was not possible (never a broken mesh)
   *.png                pictures of the PLY files, where f3d and xvfb-run are installed
 
-exit status: 0 success, 1 usage error, 2 bad input (the message names the problem)
+exit status: 0 success, 1 usage error, 2 bad input (the message names the problem),
+3 other error, 4 time limit reached
 )";
 
 struct Options
@@ -117,6 +123,7 @@ struct Options
   unsigned seed = 0;
   int threads = 0;
   long long target_vertices = 0, max_voting_pairs = 0; // 0: no cap
+  double time_limit = 0.; // seconds, 0: none
   bool remesh = false, repair = false, nested = false;
   std::string up = "+Z";
 };
@@ -132,6 +139,16 @@ long long parse_integer(const std::string& option, const std::string& text, long
     throw Usage_error(option + " expects an integer, got '" + text + "'");
   if(v < lo)
     throw Usage_error(option + " must be at least " + std::to_string(lo) + ", got " + text);
+  return v;
+}
+
+double parse_positive(const std::string& option, const std::string& text)
+{
+  std::size_t used = 0;
+  double v = 0.;
+  try { v = std::stod(text, &used); } catch(...) { used = 0; }
+  if(used != text.size() || text.empty() || !(v > 0.) || !std::isfinite(v))
+    throw Usage_error(option + " expects a positive number, got '" + text + "'");
   return v;
 }
 
@@ -152,6 +169,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--threads") o.threads = int(parse_integer(a, value(), 1));
     else if(a == "--target-vertices") o.target_vertices = parse_integer(a, value(), 4);
     else if(a == "--max-voting-pairs") o.max_voting_pairs = parse_integer(a, value(), 1);
+    else if(a == "--time-limit") o.time_limit = parse_positive(a, value());
     else if(a == "--remesh") o.remesh = true;
     else if(a == "--repair") o.repair = true;
     else if(a == "--nested-symmetries") o.nested = true;
@@ -351,6 +369,12 @@ irsym::Json repair_outputs(const Mesh& work, const IRS::Geodesic_distance_matrix
 template <typename Oracle>
 int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, irsym::Json& report)
 {
+  // --time-limit: the long stages ask this callback whether to go on
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(opt.time_limit);
+  const bool limited = opt.time_limit > 0.;
+  const std::function<bool(double)> within_limit = [deadline, limited](double) {
+    return !limited || std::chrono::steady_clock::now() < deadline;
+  };
   const fs::path out(opt.out_dir);
   const IRS::Input_report stats = IRS::check_input(input);
   {
@@ -398,7 +422,8 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   log.stop();
 
   log.start("geodesic matrix");
-  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const IRS::Geodesic_distance_matrix D =
+    IRS::compute_geodesic_distance_matrix(oracle, samples, IRS::parameters::callback(within_limit));
   log.stop();
 
   log.start("signatures");
@@ -422,22 +447,25 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
                                                    : std::numeric_limits<std::size_t>::max(); // the default: no cap
   const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(
     work, D, similar, boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
-    IRS::parameters::random_seed(opt.seed).maximum_number_of_voting_pairs(cap));
+    IRS::parameters::random_seed(opt.seed).maximum_number_of_voting_pairs(cap).callback(within_limit));
   log.stop();
 
   log.start("IRSA curves");
   std::vector<IRS::Irsa_curve> curves;
   IRS::extract_irsa_curves(work, D, voting,
                            boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
-                           std::back_inserter(curves), IRS::parameters::nested_symmetries(opt.nested));
+                           std::back_inserter(curves),
+                           IRS::parameters::nested_symmetries(opt.nested).callback(within_limit));
   log.stop();
 
   log.start("symmetric regions and map");
   std::vector<long> region(num_faces(work), -1), partner(num_vertices(work), -1);
   const std::size_t region_faces = IRS::symmetric_regions(
-    work, D, curves, boost::make_iterator_property_map(region.begin(), get(boost::face_index, work)));
+    work, D, curves, boost::make_iterator_property_map(region.begin(), get(boost::face_index, work)),
+    IRS::parameters::callback(within_limit));
   const std::size_t mapped_vertices = IRS::symmetric_vertex_map(
-    work, D, curves, boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, work)));
+    work, D, curves, boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, work)),
+    IRS::parameters::callback(within_limit));
   log.stop();
 
   log.start("segmentation");
@@ -561,7 +589,7 @@ int main(int argc, char** argv)
           .add("samples", opt.samples ? double(*opt.samples) : std::numeric_limits<double>::quiet_NaN())
           .add("seed", opt.seed).add("geodesics", opt.geodesics).add("threads", threads)
           .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh).add("up", opt.up)
-          .add("repair", opt.repair).add("nested_symmetries", opt.nested)
+          .add("repair", opt.repair).add("nested_symmetries", opt.nested).add("time_limit", opt.time_limit)
           .add("max_voting_pairs", opt.max_voting_pairs > 0 ? double(opt.max_voting_pairs)
                                                             : std::numeric_limits<double>::quiet_NaN());
     report.add("parameters", params);
@@ -585,6 +613,10 @@ int main(int argc, char** argv)
   catch(const IRS::Input_error& e) {
     std::cerr << "irsym: bad input: " << e.what() << '\n';
     return 2;
+  }
+  catch(const IRS::Operation_cancelled& e) {
+    std::cerr << "irsym: stopped, the time limit of " << opt.time_limit << " s was reached (" << e.what() << ")\n";
+    return 4;
   }
   catch(const Usage_error& e) {
     std::cerr << "irsym: " << e.what() << "\n(irsym --help lists the options)\n";

@@ -85,9 +85,9 @@ usage: irsym MESH --out DIR [options]
                        the mesh the pipeline ran on; not possible is reported, not an error
   --up AXIS            the mesh axis drawn upwards in the pictures: +X, -X, +Y, -Y, +Z
                        (default) or -Z
-  --time-limit S       stop after S seconds (exit status 4), checked during the geodesic
-                       matrix, the voting, the curves and the map (the library's callback);
-                       the other stages run to their end
+  --time-limit S       stop S seconds after the mesh is read (exit status 4), checked during
+                       the geodesic matrix, the voting, the curves and the map (the library's
+                       callback); the other stages run to their end
   --help               this text
 
 outputs in DIR:

@@ -262,32 +262,29 @@ void local_best_partners(const Mirror_matcher& mm, const std::vector<std::size_t
                                                const std::pair<double, std::size_t>& r) {
       return l.first > r.first || (l.first == r.first && l.second < r.second);
     });
+    // landmark k's term of E_w(x, y), from x's and y's distances to p_k and q_k
+    auto term = [](double w, double xp, double xq, float yp, float yq) {
+      const double d0 = xp - double(yq), d1 = xq - double(yp);
+      return w * (d0 * d0 + d1 * d1);
+    };
     // E_w of the current partner: the bound every candidate must meet
     std::size_t bj = best[i];
     double be = 0.;
-    {
-      const float* uy = mm.landmark_distances(bj);
-      for(const auto& wk : active)
-      {
-        const double d0 = double(ux[2 * wk.second]) - double(uy[2 * wk.second + 1]);
-        const double d1 = double(ux[2 * wk.second + 1]) - double(uy[2 * wk.second]);
-        be += wk.first * (d0 * d0 + d1 * d1);
-      }
-    }
+    const float* ub = mm.landmark_distances(bj);
+    for(const auto& wk : active)
+      be += term(wk.first, ux[2 * wk.second], ux[2 * wk.second + 1], ub[2 * wk.second], ub[2 * wk.second + 1]);
     std::vector<double> e(ny, 0.);
     std::vector<std::size_t> alive(ny);
     std::iota(alive.begin(), alive.end(), std::size_t(0));
     for(const auto& wk : active)
     {
-      const double w = wk.first, a0 = double(ux[2 * wk.second]), a1 = double(ux[2 * wk.second + 1]);
-      const float* cp = column.data() + (2 * wk.second) * ny;     // d(y, p_k)
-      const float* cq = column.data() + (2 * wk.second + 1) * ny; // d(y, q_k)
+      const double xp = ux[2 * wk.second], xq = ux[2 * wk.second + 1];
+      const float* yp = column.data() + (2 * wk.second) * ny;     // d(y, p_k)
+      const float* yq = column.data() + (2 * wk.second + 1) * ny; // d(y, q_k)
       std::size_t kept = 0;
       for(std::size_t t : alive)
       {
-        const double d0 = a0 - double(cq[t]);
-        const double d1 = a1 - double(cp[t]);
-        e[t] += w * (d0 * d0 + d1 * d1);
+        e[t] += term(wk.first, xp, xq, yp[t], yq[t]);
         if(e[t] <= be) alive[kept++] = t;
       }
       alive.resize(kept);

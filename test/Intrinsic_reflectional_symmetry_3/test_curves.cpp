@@ -451,6 +451,59 @@ TEST(Curves, NestedSymmetriesAreKeptOtherSymmetriesOfAPartRemoved)
   EXPECT_GT(band_min_z, top - 3. * e - 1e-9);
 }
 
+TEST(Curves, ASymmetryThatKeepsTheCoarseEigenfunctionsGivesWay)
+{
+  // A long capsule (radius 0.25, length 6.5): its first six non-constant
+  // eigenfunctions vary along z only. The x=0 plane keeps them all, as the
+  // front-back "reflection" of a posed human keeps each limb in place; the
+  // z=0 plane flips the first one. Both are symmetries of the whole capsule,
+  // so each dominates the other: whichever ranks first, z=0 is kept.
+  typedef IRS::internal::Mirror_matcher MM;
+  const auto shape = IRS::generate_capsule<Mesh>(2000, 0.25, 6.);
+  const std::size_t nv = num_vertices(shape.mesh);
+  const IRS::internal::Curves_mesh m = IRS::internal::make_curves_mesh(shape.mesh, IRS::parameters::default_values());
+  const std::size_t x_plane = 0, z_plane = 2;
+  ASSERT_EQ(shape.symmetries[x_plane].name, "x=0 plane");
+  ASSERT_EQ(shape.symmetries[z_plane].name, "z=0 plane");
+  auto partner = [&](std::size_t k) {
+    std::vector<std::size_t> p(nv, MM::none);
+    for(std::size_t v = 0; v < nv; ++v)
+      if(shape.symmetries[k].mirror[v] >= 0) p[v] = std::size_t(shape.symmetries[k].mirror[v]);
+    return p;
+  };
+  auto curve = [&](std::size_t k) {
+    IRS::internal::Working_curve c;
+    IRS::internal::Level_set_polyline pl;
+    pl.vertices = shape.symmetries[k].axis;
+    pl.weights.assign(pl.vertices.size(), 1.);
+    c.polylines.push_back(pl);
+    c.pair = k;
+    return c;
+  };
+  const std::vector<unsigned char> all(nv, 1);
+
+  IRS::internal::Region_spectrum spectrum;
+  ASSERT_TRUE(IRS::internal::region_spectrum(m, all, IRS::internal::coarse_eigenfunctions + 1, spectrum));
+  std::vector<std::size_t> identity(nv);
+  for(std::size_t v = 0; v < nv; ++v) identity[v] = v;
+  EXPECT_FALSE(IRS::internal::flips_coarse_eigenfunction(spectrum, identity, nv));
+  EXPECT_FALSE(IRS::internal::flips_coarse_eigenfunction(spectrum, partner(x_plane), nv));
+  EXPECT_TRUE(IRS::internal::flips_coarse_eigenfunction(spectrum, partner(z_plane), nv));
+
+  for(const bool x_first : {true, false})
+  {
+    std::vector<IRS::internal::Working_curve> curves = {curve(x_first ? x_plane : z_plane),
+                                                        curve(x_first ? z_plane : x_plane)};
+    std::vector<std::vector<unsigned char>> masks = {all, all};
+    std::vector<std::vector<std::size_t>> partners = {partner(curves[0].pair), partner(curves[1].pair)};
+    IRS::internal::remove_dominated_curves(m, 0.5, 3. * shape.mean_edge_length, curves, masks, partners);
+    ASSERT_EQ(curves.size(), 1u) << "x=0 first: " << x_first;
+    EXPECT_EQ(curves[0].pair, z_plane) << "x=0 first: " << x_first;
+    EXPECT_EQ(partners[0], partner(z_plane));
+    ASSERT_EQ(masks.size(), 1u);
+  }
+}
+
 TEST(Curves, NestedSymmetriesFindTheLimbsOfTheStickFigure)
 {
   // The paper's selection keeps the body's axis only (a leg's nu is tiny next

@@ -14,6 +14,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_mirror.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_regions.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_support.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/symmetric_map_spectral.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/voting_common.h>
 
 #include <algorithm>
@@ -339,6 +340,38 @@ inline std::size_t count_set(const std::vector<unsigned char>& x)
   return n;
 }
 
+/// the first non-constant eigenfunctions of a part's Laplacian that
+/// `flips_coarse_eigenfunction()` looks at
+constexpr std::size_t coarse_eigenfunctions = 6;
+
+/// Whether a reflection (the mirror partner of every vertex) changes the sign
+/// of one of the first `coarse_eigenfunctions` non-constant eigenfunctions
+/// phi_i of a part's Laplacian: <phi_i, phi_i o partner>_M < -1/2. An
+/// intrinsic symmetry maps each (simple) eigenfunction to +-itself (Ovsjanikov,
+/// Sun, Guibas 2008); one that keeps all the coarse ones is, at the part's
+/// scale, the identity: it swaps only the two sides of each limb in place.
+/// Partners outside the part count as 0.
+inline bool flips_coarse_eigenfunction(const Region_spectrum& part, const std::vector<std::size_t>& partner,
+                                       std::size_t number_of_vertices)
+{
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> row(number_of_vertices, none);
+  for(std::size_t r = 0; r < part.rows.size(); ++r) row[part.rows[r]] = r;
+  const Eigen::Index k = (std::min)(Eigen::Index(coarse_eigenfunctions + 1), part.basis.cols());
+  for(Eigen::Index i = 1; i < k; ++i)
+  {
+    double c = 0.;
+    for(std::size_t r = 0; r < part.rows.size(); ++r)
+    {
+      const std::size_t p = partner[part.rows[r]];
+      if(p == Mirror_matcher::none || row[p] == none) continue;
+      c += part.mass[Eigen::Index(r)] * part.basis(Eigen::Index(r), i) * part.basis(Eigen::Index(row[p]), i);
+    }
+    if(c < -0.5) return true;
+  }
+  return false;
+}
+
 /// Step 1b. Keeps the curves that are the axes of different parts. A curve
 /// whose part (`curve_part()`) lies mostly (more than `maximum_overlap`)
 /// where the reflection of a better ranked kept curve holds is either
@@ -349,6 +382,14 @@ inline std::size_t count_set(const std::vector<unsigned char>& x)
 ///  - or the axis of a sub-part that the better curve's reflection maps to
 ///    another sub-part (a leg, mapped to the other leg by the body's
 ///    reflection): a nested symmetry, kept (paper Fig. 12).
+/// Of two symmetries of the same part, the better ranked one is kept, unless
+/// it keeps the part's coarse eigenfunctions (`flips_coarse_eigenfunction()`)
+/// and the other does not: the other then takes its place. Why: on a posed
+/// human body (SCAPE) the front-back "reflection", which swaps the front and
+/// the back of each limb in place, often gets more votes than the left-right
+/// one, whose support the pose breaks; at the body's scale it is the
+/// identity, and the left-right reflection flips the eigenfunction that tells
+/// the left limbs from the right ones.
 inline void remove_dominated_curves(const Curves_mesh& m, double maximum_overlap, double axis_radius,
                                     std::vector<Working_curve>& curves,
                                     std::vector<std::vector<unsigned char>>& masks,
@@ -358,18 +399,38 @@ inline void remove_dominated_curves(const Curves_mesh& m, double maximum_overlap
   std::vector<Working_curve> kept_curves;
   std::vector<std::vector<unsigned char>> kept_masks;
   std::vector<std::vector<std::size_t>> kept_partners;
+  // the coarse eigenfunctions of the whole mesh, computed when first needed
+  Region_spectrum spectrum;
+  int spectrum_state = 0; // 0: not yet, 1: computed, -1: failed
   for(std::size_t c = 0; c < curves.size(); ++c)
   {
     const std::vector<unsigned char> part =
       curve_part(m, curves[c].flat_vertices(), masks[c], partners[c], axis_radius);
     const std::size_t size = count_set(part);
-    bool keep = true;
-    for(std::size_t k = 0; keep && k < kept_curves.size(); ++k)
-      keep = !is_dominated(part, size, maximum_overlap, kept_masks[k], kept_partners[k]);
-    if(!keep) continue;
-    kept_curves.push_back(std::move(curves[c]));
-    kept_masks.push_back(std::move(masks[c]));
-    kept_partners.push_back(std::move(partners[c]));
+    std::vector<std::size_t> dominating;
+    for(std::size_t k = 0; k < kept_curves.size(); ++k)
+      if(is_dominated(part, size, maximum_overlap, kept_masks[k], kept_partners[k])) dominating.push_back(k);
+    if(dominating.empty())
+    {
+      kept_curves.push_back(std::move(curves[c]));
+      kept_masks.push_back(std::move(masks[c]));
+      kept_partners.push_back(std::move(partners[c]));
+      continue;
+    }
+    if(dominating.size() > 1) continue;
+    const std::size_t k = dominating.front();
+    if(spectrum_state == 0)
+      spectrum_state = region_spectrum(m, std::vector<unsigned char>(m.number_of_vertices, 1),
+                                       coarse_eigenfunctions + 1, spectrum) ? 1 : -1;
+    if(spectrum_state < 0) continue;
+    const bool fk = flips_coarse_eigenfunction(spectrum, kept_partners[k], m.number_of_vertices),
+               fc = flips_coarse_eigenfunction(spectrum, partners[c], m.number_of_vertices);
+    if(!fk && fc)
+    {
+      kept_curves[k] = std::move(curves[c]);
+      kept_masks[k] = std::move(masks[c]);
+      kept_partners[k] = std::move(partners[c]);
+    }
   }
   curves.swap(kept_curves);
   masks.swap(kept_masks);

@@ -340,32 +340,34 @@ inline std::size_t count_set(const std::vector<unsigned char>& x)
   return n;
 }
 
-/// the first non-constant eigenfunctions of a part's Laplacian that
+/// the first non-constant Laplace eigenfunctions that
 /// `flips_coarse_eigenfunction()` looks at
 constexpr std::size_t coarse_eigenfunctions = 6;
 
 /// Whether a reflection (the mirror partner of every vertex) changes the sign
 /// of one of the first `coarse_eigenfunctions` non-constant eigenfunctions
-/// phi_i of a part's Laplacian: <phi_i, phi_i o partner>_M < -1/2. An
-/// intrinsic symmetry maps each (simple) eigenfunction to +-itself (Ovsjanikov,
-/// Sun, Guibas 2008); one that keeps all the coarse ones is, at the part's
-/// scale, the identity: it swaps only the two sides of each limb in place.
-/// Partners outside the part count as 0.
-inline bool flips_coarse_eigenfunction(const Region_spectrum& part, const std::vector<std::size_t>& partner,
+/// phi_i of `spectrum` (the whole mesh's): <phi_i, phi_i o partner>_M < -1/2.
+/// An intrinsic symmetry maps each (simple) eigenfunction to +-itself
+/// (Ovsjanikov, Sun, Guibas 2008); one that keeps all the coarse ones is, at
+/// the shape's scale, the identity: it swaps only the two sides of each limb
+/// in place. The partners are those of every vertex (where the reflection
+/// holds or not); a partner outside the spectrum's rows counts as 0.
+inline bool flips_coarse_eigenfunction(const Region_spectrum& spectrum, const std::vector<std::size_t>& partner,
                                        std::size_t number_of_vertices)
 {
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> row(number_of_vertices, none);
-  for(std::size_t r = 0; r < part.rows.size(); ++r) row[part.rows[r]] = r;
-  const Eigen::Index k = (std::min)(Eigen::Index(coarse_eigenfunctions + 1), part.basis.cols());
+  for(std::size_t r = 0; r < spectrum.rows.size(); ++r) row[spectrum.rows[r]] = r;
+  const Eigen::Index k = (std::min)(Eigen::Index(coarse_eigenfunctions + 1), spectrum.basis.cols());
   for(Eigen::Index i = 1; i < k; ++i)
   {
     double c = 0.;
-    for(std::size_t r = 0; r < part.rows.size(); ++r)
+    for(std::size_t r = 0; r < spectrum.rows.size(); ++r)
     {
-      const std::size_t p = partner[part.rows[r]];
+      const std::size_t p = partner[spectrum.rows[r]];
       if(p == Mirror_matcher::none || row[p] == none) continue;
-      c += part.mass[Eigen::Index(r)] * part.basis(Eigen::Index(r), i) * part.basis(Eigen::Index(row[p]), i);
+      c += spectrum.mass[Eigen::Index(r)] * spectrum.basis(Eigen::Index(r), i) *
+           spectrum.basis(Eigen::Index(row[p]), i);
     }
     if(c < -0.5) return true;
   }
@@ -383,13 +385,15 @@ inline bool flips_coarse_eigenfunction(const Region_spectrum& part, const std::v
 ///    another sub-part (a leg, mapped to the other leg by the body's
 ///    reflection): a nested symmetry, kept (paper Fig. 12).
 /// Of two symmetries of the same part, the better ranked one is kept, unless
-/// it keeps the part's coarse eigenfunctions (`flips_coarse_eigenfunction()`)
+/// it keeps the mesh's coarse eigenfunctions (`flips_coarse_eigenfunction()`)
 /// and the other does not: the other then takes its place. Why: on a posed
 /// human body (SCAPE) the front-back "reflection", which swaps the front and
 /// the back of each limb in place, often gets more votes than the left-right
 /// one, whose support the pose breaks; at the body's scale it is the
 /// identity, and the left-right reflection flips the eigenfunction that tells
-/// the left limbs from the right ones.
+/// the left limbs from the right ones. The whole mesh's eigenfunctions, not
+/// the part's: on SCAPE mesh036 the part leaves out limbs, and on its own
+/// spectrum the left-right reflection flips none (on the mesh's, phi_3: -0.96).
 inline void remove_dominated_curves(const Curves_mesh& m, double maximum_overlap, double axis_radius,
                                     std::vector<Working_curve>& curves,
                                     std::vector<std::vector<unsigned char>>& masks,

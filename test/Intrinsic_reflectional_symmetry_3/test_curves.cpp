@@ -382,6 +382,31 @@ TEST(Curves, LocalPartnersEqualTheLiteralMinimum)
   EXPECT_GT(moved, 0u); // the weights matter
 }
 
+namespace {
+
+// the mirror partner of every vertex under a generated shape's known
+// symmetry, Mirror_matcher::none where that symmetry is not defined
+std::vector<std::size_t> known_partners(const IRS::Known_symmetry& symmetry)
+{
+  std::vector<std::size_t> p(symmetry.mirror.size(), IRS::internal::Mirror_matcher::none);
+  for(std::size_t v = 0; v < p.size(); ++v)
+    if(symmetry.mirror[v] >= 0) p[v] = std::size_t(symmetry.mirror[v]);
+  return p;
+}
+
+// a curve being extracted along `vertices` (one polyline, unit weights)
+IRS::internal::Working_curve working_curve(const std::vector<std::size_t>& vertices)
+{
+  IRS::internal::Working_curve c;
+  IRS::internal::Level_set_polyline pl;
+  pl.vertices = vertices;
+  pl.weights.assign(vertices.size(), 1.);
+  c.polylines.push_back(pl);
+  return c;
+}
+
+} // namespace
+
 TEST(Curves, NestedSymmetriesAreKeptOtherSymmetriesOfAPartRemoved)
 {
   // a capsule along z; the better curve is the z=0 plane (it swaps the two
@@ -400,19 +425,12 @@ TEST(Curves, NestedSymmetriesAreKeptOtherSymmetriesOfAPartRemoved)
   const std::size_t nv = pts.size();
   const IRS::internal::Curves_mesh m = IRS::internal::make_curves_mesh(shape.mesh, IRS::parameters::default_values());
   const double e = shape.mean_edge_length;
-  auto mirror = [&](std::size_t k) {
-    std::vector<std::size_t> p(nv, MM::none);
-    for(std::size_t v = 0; v < nv; ++v)
-      if(shape.symmetries[k].mirror[v] >= 0) p[v] = std::size_t(shape.symmetries[k].mirror[v]);
-    return p;
-  };
+  auto mirror = [&](std::size_t k) { return known_partners(shape.symmetries[k]); };
   auto curve = [&](std::size_t k, double min_z) {
-    IRS::internal::Working_curve c;
-    IRS::internal::Level_set_polyline pl;
+    std::vector<std::size_t> axis;
     for(std::size_t v : shape.symmetries[k].axis)
-      if(pts[v].z() > min_z) { pl.vertices.push_back(v); pl.weights.push_back(1.); }
-    c.polylines.push_back(pl);
-    return c;
+      if(pts[v].z() > min_z) axis.push_back(v);
+    return working_curve(axis);
   };
   const double low = -1e9, top = 1.1; // the cylinder ends at z = 1
   std::vector<unsigned char> all(nv, 1), top_end(nv, 0);
@@ -458,25 +476,15 @@ TEST(Curves, ASymmetryThatKeepsTheCoarseEigenfunctionsGivesWay)
   // front-back "reflection" of a posed human keeps each limb in place; the
   // z=0 plane flips the first one. Both are symmetries of the whole capsule,
   // so each dominates the other: whichever ranks first, z=0 is kept.
-  typedef IRS::internal::Mirror_matcher MM;
   const auto shape = IRS::generate_capsule<Mesh>(2000, 0.25, 6.);
   const std::size_t nv = num_vertices(shape.mesh);
   const IRS::internal::Curves_mesh m = IRS::internal::make_curves_mesh(shape.mesh, IRS::parameters::default_values());
   const std::size_t x_plane = 0, z_plane = 2;
   ASSERT_EQ(shape.symmetries[x_plane].name, "x=0 plane");
   ASSERT_EQ(shape.symmetries[z_plane].name, "z=0 plane");
-  auto partner = [&](std::size_t k) {
-    std::vector<std::size_t> p(nv, MM::none);
-    for(std::size_t v = 0; v < nv; ++v)
-      if(shape.symmetries[k].mirror[v] >= 0) p[v] = std::size_t(shape.symmetries[k].mirror[v]);
-    return p;
-  };
+  auto partner = [&](std::size_t k) { return known_partners(shape.symmetries[k]); };
   auto curve = [&](std::size_t k) {
-    IRS::internal::Working_curve c;
-    IRS::internal::Level_set_polyline pl;
-    pl.vertices = shape.symmetries[k].axis;
-    pl.weights.assign(pl.vertices.size(), 1.);
-    c.polylines.push_back(pl);
+    IRS::internal::Working_curve c = working_curve(shape.symmetries[k].axis);
     c.pair = k;
     return c;
   };

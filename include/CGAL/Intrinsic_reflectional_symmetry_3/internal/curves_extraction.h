@@ -403,37 +403,44 @@ inline void remove_dominated_curves(const Curves_mesh& m, double maximum_overlap
   std::vector<Working_curve> kept_curves;
   std::vector<std::vector<unsigned char>> kept_masks;
   std::vector<std::vector<std::size_t>> kept_partners;
-  // the coarse eigenfunctions of the whole mesh, computed when first needed
+  // the coarse eigenfunctions of the whole mesh, computed when first needed,
+  // and whether each kept curve's reflection flips one (-1: not known yet)
   Region_spectrum spectrum;
   int spectrum_state = 0; // 0: not yet, 1: computed, -1: failed
+  std::vector<int> kept_flips;
+  auto flips = [&](const std::vector<std::size_t>& partner) {
+    if(spectrum_state == 0)
+      spectrum_state = region_spectrum(m, std::vector<unsigned char>(m.number_of_vertices, 1),
+                                       coarse_eigenfunctions + 1, spectrum) ? 1 : -1;
+    return spectrum_state > 0 && flips_coarse_eigenfunction(spectrum, partner, m.number_of_vertices);
+  };
+  const std::size_t none = std::size_t(-1);
   for(std::size_t c = 0; c < curves.size(); ++c)
   {
     const std::vector<unsigned char> part =
       curve_part(m, curves[c].flat_vertices(), masks[c], partners[c], axis_radius);
     const std::size_t size = count_set(part);
-    std::vector<std::size_t> dominating;
+    std::size_t dominating = none, number_dominating = 0;
     for(std::size_t k = 0; k < kept_curves.size(); ++k)
-      if(is_dominated(part, size, maximum_overlap, kept_masks[k], kept_partners[k])) dominating.push_back(k);
-    if(dominating.empty())
+      if(is_dominated(part, size, maximum_overlap, kept_masks[k], kept_partners[k]) && number_dominating++ == 0)
+        dominating = k;
+    if(number_dominating == 0)
     {
       kept_curves.push_back(std::move(curves[c]));
       kept_masks.push_back(std::move(masks[c]));
       kept_partners.push_back(std::move(partners[c]));
+      kept_flips.push_back(-1);
       continue;
     }
-    if(dominating.size() > 1) continue;
-    const std::size_t k = dominating.front();
-    if(spectrum_state == 0)
-      spectrum_state = region_spectrum(m, std::vector<unsigned char>(m.number_of_vertices, 1),
-                                       coarse_eigenfunctions + 1, spectrum) ? 1 : -1;
-    if(spectrum_state < 0) continue;
-    const bool fk = flips_coarse_eigenfunction(spectrum, kept_partners[k], m.number_of_vertices),
-               fc = flips_coarse_eigenfunction(spectrum, partners[c], m.number_of_vertices);
-    if(!fk && fc)
+    if(number_dominating > 1) continue;
+    const std::size_t k = dominating;
+    if(kept_flips[k] < 0) kept_flips[k] = flips(kept_partners[k]);
+    if(kept_flips[k] == 0 && flips(partners[c]))
     {
       kept_curves[k] = std::move(curves[c]);
       kept_masks[k] = std::move(masks[c]);
       kept_partners[k] = std::move(partners[c]);
+      kept_flips[k] = 1;
     }
   }
   curves.swap(kept_curves);

@@ -510,6 +510,50 @@ TEST(Curves, ASymmetryThatKeepsTheCoarseEigenfunctionsGivesWay)
     EXPECT_EQ(partners[0], partner(z_plane));
     ASSERT_EQ(masks.size(), 1u);
   }
+
+  // Below the stopping rule: x=0 alone above it. The boundaries below are
+  // searched while the kept curve is an identity (y=0 keeps the
+  // eigenfunctions too), and z=0 takes its place; never more than
+  // coarse_identity_horizon boundaries in all, and none when the kept curve
+  // already flips one.
+  const std::size_t y_plane = 1;
+  ASSERT_EQ(shape.symmetries[y_plane].name, "y=0 plane");
+  for(const std::vector<std::size_t>& below : std::vector<std::vector<std::size_t>>{
+        {y_plane, z_plane, x_plane}, std::vector<std::size_t>(20, y_plane), {z_plane}})
+  {
+    const std::size_t above = below.size() == 1 ? z_plane : x_plane;
+    std::vector<IRS::internal::Working_curve> curves = {curve(above)};
+    std::vector<std::vector<unsigned char>> masks = {all};
+    std::vector<std::vector<std::size_t>> partners = {partner(above)};
+    std::size_t asked = 0;
+    auto more = [&](IRS::internal::Working_curve& w, std::vector<unsigned char>& mask,
+                    std::vector<std::size_t>& p) {
+      if(asked == below.size()) return false;
+      const std::size_t k = below[asked++];
+      w = curve(k);
+      mask = all;
+      p = partner(k);
+      return true;
+    };
+    IRS::internal::remove_dominated_curves(m, 0.5, 3. * shape.mean_edge_length, curves, masks, partners, more);
+    ASSERT_EQ(curves.size(), 1u);
+    if(below.size() == 3)
+    {
+      EXPECT_EQ(asked, 2u);
+      EXPECT_EQ(curves[0].pair, z_plane);
+      EXPECT_EQ(partners[0], partner(z_plane));
+    }
+    else if(below.size() == 20)
+    {
+      EXPECT_EQ(asked, IRS::internal::coarse_identity_horizon - 1);
+      EXPECT_EQ(curves[0].pair, x_plane);
+    }
+    else
+    {
+      EXPECT_EQ(asked, 0u);
+      EXPECT_EQ(curves[0].pair, z_plane);
+    }
+  }
 }
 
 TEST(Curves, NestedSymmetriesFindTheLimbsOfTheStickFigure)

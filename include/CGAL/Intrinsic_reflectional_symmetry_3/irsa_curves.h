@@ -271,7 +271,13 @@ inline Irsa_curve to_irsa_curve(const Working_curve& w, const Irsa_voting_result
 /// Guibas 2008), so one that keeps all the coarse ones is the identity at the
 /// shape's scale: the front-back "reflection" of a posed human, which swaps
 /// the front and the back of each limb in place, often outvotes the
-/// left-right one there (on SCAPE it ranks first on 7 of 18 meshes).
+/// left-right one there (on SCAPE it ranks first on 7 of 18 meshes). When a
+/// kept curve is still such an identity, the boundaries below the stopping
+/// rule, down to the 12th best of the ranking, are searched in order for a
+/// symmetry of its part whose reflection flips one, which takes its place;
+/// they are never kept otherwise. The pose can push the left-right
+/// reflection below the rule (SCAPE mesh068, seed 1: the third boundary,
+/// the first below the rule).
 ///
 /// **2b. Nested symmetries** (`nested_symmetries`, not in the paper). nu
 /// grows like the cube of a part's supporting pairs, so that an arm's axis
@@ -452,7 +458,7 @@ OutputIterator extract_irsa_curves(const TriangleMesh& tm, const Geodesic_distan
   progress.step(0.1);
   std::vector<internal::Working_curve> curves = internal::select_initial_curves(ranking, st);
   progress.step(0.3);
-  internal::refine_curves<ConcurrencyTag>(m, D, st, curves, st.nested_symmetries ? &ranking : nullptr);
+  internal::refine_curves<ConcurrencyTag>(m, D, st, curves, &ranking);
   progress.step(0.9);
   internal::prune_curves(m, D, st, curves);
   progress.step(1.);

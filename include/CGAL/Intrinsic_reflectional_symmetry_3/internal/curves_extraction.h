@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -239,9 +240,20 @@ curve_landmarks(const Geodesic_distance_matrix& D, std::size_t a, std::size_t b,
   return spread_landmarks<ConcurrencyTag>(D, choose_landmarks(D, a, b, pairs, K), allowed, tol, K, landmark_rounds);
 }
 
-/// The vertices supporting each curve's reflection (curves_mirror.h), with
+/// The vertices supporting a curve's reflection (curves_mirror.h), with
 /// landmarks from its voting pair and its initial eligible pairs; with
-/// `partners`, also the best mirror partner of every vertex under each.
+/// `partner`, also the best mirror partner of every vertex under it.
+template <class ConcurrencyTag>
+std::vector<unsigned char> curve_mask(const Geodesic_distance_matrix& D, const Curve_settings& st,
+                                      const Working_curve& curve, std::vector<std::size_t>* partner = nullptr)
+{
+  const std::vector<unsigned char> everywhere(D.number_of_vertices(), 1);
+  const auto landmarks = curve_landmarks<ConcurrencyTag>(D, curve.a, curve.b, curve.initial_pairs, everywhere,
+                                                         st.number_of_landmarks, st.symmetry);
+  return symmetry_support_mask<ConcurrencyTag>(D, curve.flat_vertices(), landmarks, st.symmetry, partner);
+}
+
+/// `curve_mask()` of each curve
 template <class ConcurrencyTag>
 std::vector<std::vector<unsigned char>> curve_masks(const Geodesic_distance_matrix& D,
                                                     const Curve_settings& st,
@@ -250,14 +262,8 @@ std::vector<std::vector<unsigned char>> curve_masks(const Geodesic_distance_matr
 {
   std::vector<std::vector<unsigned char>> masks;
   if(partners) partners->assign(curves.size(), std::vector<std::size_t>());
-  const std::vector<unsigned char> everywhere(D.number_of_vertices(), 1);
   for(std::size_t c = 0; c < curves.size(); ++c)
-  {
-    const auto landmarks = curve_landmarks<ConcurrencyTag>(D, curves[c].a, curves[c].b, curves[c].initial_pairs,
-                                                           everywhere, st.number_of_landmarks, st.symmetry);
-    masks.push_back(symmetry_support_mask<ConcurrencyTag>(D, curves[c].flat_vertices(), landmarks, st.symmetry,
-                                                          partners ? &(*partners)[c] : nullptr));
-  }
+    masks.push_back(curve_mask<ConcurrencyTag>(D, st, curves[c], partners ? &(*partners)[c] : nullptr));
   return masks;
 }
 
@@ -374,6 +380,18 @@ inline bool flips_coarse_eigenfunction(const Region_spectrum& spectrum, const st
   return false;
 }
 
+/// The number of best ranked boundaries, those above the stopping rule
+/// included, among which `remove_dominated_curves()` looks for a symmetry to
+/// replace a kept curve whose reflection is a coarse identity.
+constexpr std::size_t coarse_identity_horizon = 12;
+
+/// No boundary below the stopping rule (the default of
+/// `remove_dominated_curves()`).
+struct No_more_candidates
+{
+  bool operator()(Working_curve&, std::vector<unsigned char>&, std::vector<std::size_t>&) const { return false; }
+};
+
 /// Step 1b. Keeps the curves that are the axes of different parts. A curve
 /// whose part (`curve_part()`) lies mostly (more than `maximum_overlap`)
 /// where the reflection of a better ranked kept curve holds is either
@@ -394,10 +412,18 @@ inline bool flips_coarse_eigenfunction(const Region_spectrum& spectrum, const st
 /// the left limbs from the right ones. The whole mesh's eigenfunctions, not
 /// the part's: on SCAPE mesh036 the part leaves out limbs, and on its own
 /// spectrum the left-right reflection flips none (on the mesh's, phi_3: -0.96).
-inline void remove_dominated_curves(const Curves_mesh& m, double maximum_overlap, double axis_radius,
-                                    std::vector<Working_curve>& curves,
-                                    std::vector<std::vector<unsigned char>>& masks,
-                                    std::vector<std::vector<std::size_t>>& partners)
+/// When a kept curve is still such an identity after the curves above the
+/// stopping rule, the boundaries below it (`more_candidates` gives the next
+/// one with its support mask and partners, or returns false) are searched for
+/// the same replacement, down to the `coarse_identity_horizon`-th boundary of
+/// the ranking; they are never kept otherwise. Why: the pose can push the
+/// left-right reflection below the rule (SCAPE mesh068, seed 1: the third
+/// boundary, the first below the rule).
+template <class MoreCandidates = No_more_candidates>
+void remove_dominated_curves(const Curves_mesh& m, double maximum_overlap, double axis_radius,
+                             std::vector<Working_curve>& curves, std::vector<std::vector<unsigned char>>& masks,
+                             std::vector<std::vector<std::size_t>>& partners,
+                             MoreCandidates more_candidates = MoreCandidates())
 {
   if(curves.empty()) return;
   std::vector<Working_curve> kept_curves;
@@ -414,34 +440,53 @@ inline void remove_dominated_curves(const Curves_mesh& m, double maximum_overlap
                                        coarse_eigenfunctions + 1, spectrum) ? 1 : -1;
     return spectrum_state > 0 && flips_coarse_eigenfunction(spectrum, partner, m.number_of_vertices);
   };
-  const std::size_t none = std::size_t(-1);
-  for(std::size_t c = 0; c < curves.size(); ++c)
-  {
-    const std::vector<unsigned char> part =
-      curve_part(m, curves[c].flat_vertices(), masks[c], partners[c], axis_radius);
+  auto kept_flip = [&](std::size_t k) {
+    if(kept_flips[k] < 0) kept_flips[k] = flips(kept_partners[k]);
+    return kept_flips[k] == 1;
+  };
+  // a candidate dominated by no kept curve is kept when `may_keep`; one
+  // dominated by a single kept curve only may replace it
+  auto offer = [&](Working_curve& curve, std::vector<unsigned char>& mask, std::vector<std::size_t>& partner,
+                   bool may_keep) {
+    const std::vector<unsigned char> part = curve_part(m, curve.flat_vertices(), mask, partner, axis_radius);
     const std::size_t size = count_set(part);
-    std::size_t dominating = none, number_dominating = 0;
+    std::size_t dominating = 0, number_dominating = 0;
     for(std::size_t k = 0; k < kept_curves.size(); ++k)
       if(is_dominated(part, size, maximum_overlap, kept_masks[k], kept_partners[k]) && number_dominating++ == 0)
         dominating = k;
-    if(number_dominating == 0)
+    if(number_dominating == 0 && may_keep)
     {
-      kept_curves.push_back(std::move(curves[c]));
-      kept_masks.push_back(std::move(masks[c]));
-      kept_partners.push_back(std::move(partners[c]));
+      kept_curves.push_back(std::move(curve));
+      kept_masks.push_back(std::move(mask));
+      kept_partners.push_back(std::move(partner));
       kept_flips.push_back(-1);
-      continue;
     }
-    if(number_dominating > 1) continue;
+    if(number_dominating != 1) return;
     const std::size_t k = dominating;
-    if(kept_flips[k] < 0) kept_flips[k] = flips(kept_partners[k]);
-    if(kept_flips[k] == 0 && flips(partners[c]))
+    if(!kept_flip(k) && flips(partner))
     {
-      kept_curves[k] = std::move(curves[c]);
-      kept_masks[k] = std::move(masks[c]);
-      kept_partners[k] = std::move(partners[c]);
+      kept_curves[k] = std::move(curve);
+      kept_masks[k] = std::move(mask);
+      kept_partners[k] = std::move(partner);
       kept_flips[k] = 1;
     }
+  };
+  const std::size_t above_stopping_rule = curves.size();
+  for(std::size_t c = 0; c < above_stopping_rule; ++c)
+    offer(curves[c], masks[c], partners[c], true);
+  auto some_identity_is_kept = [&] {
+    if(std::is_same<MoreCandidates, No_more_candidates>::value) return false; // no spectrum needed
+    for(std::size_t k = 0; k < kept_curves.size(); ++k)
+      if(!kept_flip(k)) return true;
+    return false;
+  };
+  Working_curve curve;
+  std::vector<unsigned char> mask;
+  std::vector<std::size_t> partner;
+  for(std::size_t rank = above_stopping_rule; rank < coarse_identity_horizon && some_identity_is_kept(); ++rank)
+  {
+    if(!more_candidates(curve, mask, partner)) break;
+    offer(curve, mask, partner, false);
   }
   curves.swap(kept_curves);
   masks.swap(kept_masks);
@@ -612,16 +657,28 @@ void add_nested_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D,
 /// most `number_of_iterations` times. Curves left without voters are removed.
 template <class ConcurrencyTag>
 void refine_curves(const Curves_mesh& m, const Geodesic_distance_matrix& D, const Curve_settings& st,
-                   std::vector<Working_curve>& curves, Boundary_ranking* nested = nullptr)
+                   std::vector<Working_curve>& curves, Boundary_ranking* ranking = nullptr)
 {
   for(auto& c : curves) recompute_support(D, st, c);
   // the curves do not move and their landmarks come from the initial pairs:
   // the support masks are computed once
   std::vector<std::vector<std::size_t>> partners;
   std::vector<std::vector<unsigned char>> masks = curve_masks<ConcurrencyTag>(D, st, curves, &partners);
-  remove_dominated_curves(m, st.maximum_overlap, 2. * st.ignition, curves, masks, partners);
-  if(nested != nullptr)
-    add_nested_curves<ConcurrencyTag>(m, D, st, *nested, curves, masks, partners);
+  // the next boundaries below the stopping rule, taken as step 1 takes them
+  auto below_stopping_rule = [&](Working_curve& w, std::vector<unsigned char>& mask,
+                                 std::vector<std::size_t>& partner) {
+    double nu = 0.;
+    const std::size_t k = ranking ? ranking->best(nu) : Boundary_ranking::none;
+    if(k == Boundary_ranking::none) return false;
+    ranking->take(k);
+    w = ranking->curve(k, nu);
+    recompute_support(D, st, w);
+    mask = curve_mask<ConcurrencyTag>(D, st, w, &partner);
+    return true;
+  };
+  remove_dominated_curves(m, st.maximum_overlap, 2. * st.ignition, curves, masks, partners, below_stopping_rule);
+  if(ranking != nullptr && st.nested_symmetries)
+    add_nested_curves<ConcurrencyTag>(m, D, st, *ranking, curves, masks, partners);
   for(std::size_t it = 0; it < st.number_of_iterations && !curves.empty(); ++it)
   {
     const Region_growing_result rg = grow_regions(m, region_seeds(curves, masks), st.ignition);

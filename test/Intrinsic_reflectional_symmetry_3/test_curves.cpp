@@ -469,6 +469,34 @@ TEST(Curves, NestedSymmetriesAreKeptOtherSymmetriesOfAPartRemoved)
   EXPECT_GT(band_min_z, top - 3. * e - 1e-9);
 }
 
+TEST(Curves, ACoarseFlipIsAMostlyDiagonalFunctionalMapWithANegativeEntry)
+{
+  using IRS::internal::is_coarse_flip;
+  // diagonals measured on SCAPE (6 coarse eigenfunctions): the left-right
+  // reflection of mesh044 (37 % of the squared norm off the diagonal), and a
+  // poor candidate of mesh056, seed 1 (64 % off the diagonal)
+  const Eigen::VectorXd left_right = (Eigen::VectorXd(6) << 0.83, 0.13, -0.69, 0.92, 0.74, -0.10).finished();
+  const Eigen::VectorXd poor = (Eigen::VectorXd(6) << -0.52, 0.55, 0.18, 0.57, 0.49, 0.55).finished();
+  // a matrix of diagonal d whose share of the squared norm off the diagonal is `off`
+  auto with_off_diagonal = [](const Eigen::VectorXd& d, double off) {
+    const double each = std::sqrt(off / (1. - off) * d.squaredNorm() / double(d.size() * (d.size() - 1)));
+    Eigen::MatrixXd C = Eigen::MatrixXd::Constant(d.size(), d.size(), each);
+    C.diagonal() = d;
+    return C;
+  };
+  EXPECT_TRUE(is_coarse_flip(with_off_diagonal(left_right, 0.37)));
+  EXPECT_FALSE(is_coarse_flip(with_off_diagonal(poor, 0.64)));
+  EXPECT_TRUE(is_coarse_flip(with_off_diagonal(poor, 0.)));
+  EXPECT_FALSE(is_coarse_flip(with_off_diagonal(left_right, 0.51)));
+  EXPECT_FALSE(is_coarse_flip(Eigen::MatrixXd::Identity(6, 6)));
+  Eigen::MatrixXd weak = Eigen::MatrixXd::Identity(6, 6);
+  weak(2, 2) = -0.45; // a sign kept at -1/2
+  EXPECT_FALSE(is_coarse_flip(weak));
+  weak(2, 2) = -0.55;
+  EXPECT_TRUE(is_coarse_flip(weak));
+  EXPECT_FALSE(is_coarse_flip(Eigen::MatrixXd()));
+}
+
 TEST(Curves, ASymmetryThatKeepsTheCoarseEigenfunctionsGivesWay)
 {
   // A long capsule (radius 0.25, length 6.5): its first six non-constant

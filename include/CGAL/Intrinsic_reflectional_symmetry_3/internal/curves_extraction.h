@@ -350,28 +350,19 @@ inline std::size_t count_set(const std::vector<unsigned char>& x)
 /// `flips_coarse_eigenfunction()` looks at
 constexpr std::size_t coarse_eigenfunctions = 6;
 
-/// Whether a reflection (the mirror partner of every vertex) is, at the
-/// shape's scale, a symmetry that changes the sign of one of the first
-/// `coarse_eigenfunctions` non-constant eigenfunctions phi_i of `spectrum`
-/// (the whole mesh's). An intrinsic symmetry maps each (simple)
-/// eigenfunction to +-itself (Ovsjanikov, Sun, Guibas 2008): its functional
-/// map C_ij = <phi_i, phi_j o partner>_M on them is diagonal with entries
-/// +-1. So: more than half of C's squared norm on its diagonal, and some
-/// C_ii < -1/2. A reflection that keeps all the coarse ones is, at the
-/// shape's scale, the identity: it swaps only the two sides of each limb in
-/// place; one whose C is mostly off the diagonal is no symmetry at that
-/// scale (SCAPE mesh056, seed 1: C_11 = -0.52 with 64 % of the norm off the
-/// diagonal; its symmetric map got none of the benchmark's checks right). The partners are those
-/// of every vertex (where the reflection holds or not); a partner outside
-/// the spectrum's rows counts as 0.
-inline bool flips_coarse_eigenfunction(const Region_spectrum& spectrum, const std::vector<std::size_t>& partner,
-                                       std::size_t number_of_vertices)
+/// The functional map of a reflection (the mirror partner of every vertex)
+/// on the first `coarse_eigenfunctions` non-constant eigenfunctions phi_i
+/// of `spectrum` (the whole mesh's): C_ij = <phi_i, phi_j o partner>_M. The
+/// partners are those of every vertex (where the reflection holds or not); a
+/// partner outside the spectrum's rows counts as 0.
+inline Eigen::MatrixXd coarse_functional_map(const Region_spectrum& spectrum, const std::vector<std::size_t>& partner,
+                                             std::size_t number_of_vertices)
 {
+  const Eigen::Index k = (std::min)(Eigen::Index(coarse_eigenfunctions + 1), spectrum.basis.cols()) - 1;
+  if(k < 1) return Eigen::MatrixXd();
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> row(number_of_vertices, none);
   for(std::size_t r = 0; r < spectrum.rows.size(); ++r) row[spectrum.rows[r]] = r;
-  const Eigen::Index k = (std::min)(Eigen::Index(coarse_eigenfunctions + 1), spectrum.basis.cols()) - 1;
-  if(k < 1) return false;
   const Eigen::Index n = Eigen::Index(spectrum.rows.size());
   Eigen::MatrixXd mapped = Eigen::MatrixXd::Zero(n, k); // phi_j o partner
   for(Eigen::Index r = 0; r < n; ++r)
@@ -379,8 +370,30 @@ inline bool flips_coarse_eigenfunction(const Region_spectrum& spectrum, const st
     const std::size_t p = partner[spectrum.rows[std::size_t(r)]];
     if(p != Mirror_matcher::none && row[p] != none) mapped.row(r) = spectrum.basis.block(Eigen::Index(row[p]), 1, 1, k);
   }
-  const Eigen::MatrixXd C = spectrum.basis.middleCols(1, k).transpose() * spectrum.mass.asDiagonal() * mapped;
-  return C.diagonal().squaredNorm() > 0.5 * C.squaredNorm() && C.diagonal().minCoeff() < -0.5;
+  return spectrum.basis.middleCols(1, k).transpose() * spectrum.mass.asDiagonal() * mapped;
+}
+
+/// Whether a functional map on the coarse eigenfunctions
+/// (`coarse_functional_map()`) is that of a symmetry, at the shape's scale,
+/// that changes the sign of one of them. An intrinsic symmetry maps each
+/// (simple) eigenfunction to +-itself (Ovsjanikov, Sun, Guibas 2008): C is
+/// diagonal with entries +-1. So: more than half of C's squared norm on its
+/// diagonal, and some C_ii < -1/2. A reflection that keeps all the coarse
+/// ones is, at the shape's scale, the identity: it swaps only the two sides
+/// of each limb in place; one whose C is mostly off the diagonal is no
+/// symmetry at that scale (SCAPE mesh056, seed 1: C_11 = -0.52 with 64 % of
+/// the norm off the diagonal; its symmetric map got none of the benchmark's
+/// checks right).
+inline bool is_coarse_flip(const Eigen::MatrixXd& C)
+{
+  return C.size() > 0 && C.diagonal().squaredNorm() > 0.5 * C.squaredNorm() && C.diagonal().minCoeff() < -0.5;
+}
+
+/// `is_coarse_flip()` of a reflection's `coarse_functional_map()`
+inline bool flips_coarse_eigenfunction(const Region_spectrum& spectrum, const std::vector<std::size_t>& partner,
+                                       std::size_t number_of_vertices)
+{
+  return is_coarse_flip(coarse_functional_map(spectrum, partner, number_of_vertices));
 }
 
 /// The number of best ranked boundaries, those above the stopping rule

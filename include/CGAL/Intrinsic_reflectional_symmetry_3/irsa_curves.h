@@ -263,21 +263,24 @@ inline Irsa_curve to_irsa_curve(const Working_curve& w, const Irsa_voting_result
 /// it is removed. A part that the better curve's reflection maps elsewhere
 /// (a leg, mapped to the other leg by the body's reflection) is a nested
 /// symmetry and its curve is kept. Of two such symmetries of the same part
-/// the better ranked one is kept, unless its reflection keeps the sign of
-/// each of the first six non-constant eigenfunctions of the mesh's Laplacian
-/// (cotangent weights, lumped masses; kept: <phi, phi o R> >= -1/2) while the
-/// other's flips one: the other then takes its place. An intrinsic symmetry
-/// maps each eigenfunction to plus or minus itself (Ovsjanikov, Sun and
-/// Guibas 2008), so one that keeps all the coarse ones is the identity at the
-/// shape's scale: the front-back "reflection" of a posed human, which swaps
-/// the front and the back of each limb in place, often outvotes the
-/// left-right one there (on SCAPE it ranks first on 7 of 18 meshes). When a
-/// kept curve is still such an identity, the boundaries below the stopping
-/// rule, down to the 12th best of the ranking, are searched in order for a
-/// symmetry of its part whose reflection flips one, which takes its place;
-/// they are never kept otherwise. The pose can push the left-right
-/// reflection below the rule (SCAPE mesh068, seed 1: the third boundary,
-/// the first below the rule).
+/// the better ranked one is kept, unless its reflection flips none of the
+/// first six non-constant eigenfunctions of the mesh's Laplacian (cotangent
+/// weights, lumped masses) while the other's flips one: the other then takes
+/// its place. A reflection R flips one when its functional map on them,
+/// C_ij = <phi_i, phi_j o R>, has more than half of its squared norm on the
+/// diagonal and some C_ii < -1/2. An intrinsic symmetry maps each
+/// eigenfunction to plus or minus itself (Ovsjanikov, Sun and Guibas 2008),
+/// so one that keeps all the coarse ones is the identity at the shape's
+/// scale, and one whose map is mostly off the diagonal is no symmetry at
+/// that scale. The front-back "reflection" of a posed human, which swaps the
+/// front and the back of each limb in place, is such an identity, and it
+/// often outvotes the left-right one (on SCAPE it ranks first on 7 of 18
+/// meshes). When a kept curve is still such an identity, the boundaries
+/// below the stopping rule, down to the 12th best of the ranking, are
+/// searched in order for a symmetry of its part whose reflection flips one,
+/// which takes its place; they are never kept otherwise. The pose can push
+/// the left-right reflection below the rule (SCAPE mesh068, seed 1: the
+/// third boundary, the first below the rule).
 ///
 /// **2b. Nested symmetries** (`nested_symmetries`, not in the paper). nu
 /// grows like the cube of a part's supporting pairs, so that an arm's axis

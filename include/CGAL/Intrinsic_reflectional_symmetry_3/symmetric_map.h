@@ -317,8 +317,8 @@ std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance
 /// the spectral embedding, and k grows from 30 to `number_of_eigenfunctions`
 /// (default 150) by 5; at the last size every vertex is mapped so. On FAUST
 /// this raises the correspondence rate from 99.0 % to 99.7 % (posed shapes
-/// 98.15 % to 99.5 %, tr_reg_002 96.5 % to 99.9 %), on SCAPE from 65.2 % to
-/// 66.8 % (symmetry_map_benchmark, seed 0, column CR0% without the step),
+/// 98.15 % to 99.5 %, tr_reg_002 96.5 % to 99.9 %), on SCAPE from 84.3 % to
+/// 84.7 % (symmetry_map_benchmark, seed 0, column CR0% without the step),
 /// for about 1.5 s per 5K-vertex shape on two cores; the cost grows as
 /// the square of the region's number of vertices. Regions with fewer than 40
 /// vertices on their faces keep the landmark match.

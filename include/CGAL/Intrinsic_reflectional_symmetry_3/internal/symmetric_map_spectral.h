@@ -49,7 +49,7 @@
 // et al. 2010; column CR0% is the same run without this step; seed 0, with
 // the regions' tolerance 1.5 and the fixed-point rule of symmetric_map_dense.h):
 // FAUST 98.98 -> 99.74 %, its posed shapes 98.15 -> 99.50 % (tr_reg_002
-// 96.5 -> 99.9 %), SCAPE 83.33 -> 83.71 % (65.15 -> 66.79 % before the
+// 96.5 -> 99.9 %), SCAPE 84.34 -> 84.72 % (65.15 -> 66.79 % before the
 // coarse-eigenfunction rule of the curve extraction); on
 // FAUST (5K vertices) the step costs about 1.5 s on two cores. Every vertex
 // of the region is compared with every other at the last size, so the cost

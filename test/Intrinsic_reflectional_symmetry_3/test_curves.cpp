@@ -543,11 +543,24 @@ TEST(Curves, ASymmetryThatKeepsTheCoarseEigenfunctionsGivesWay)
   // searched while the kept curve is an identity (y=0 keeps the
   // eigenfunctions too), and z=0 takes its place; never more than
   // coarse_identity_horizon boundaries in all, and none when the kept curve
-  // already flips one.
-  const std::size_t y_plane = 1;
+  // already flips one. A boundary below the rule that no kept curve
+  // dominates is not kept: `side`, a curve on the x > 0 side whose part is
+  // itself, which the x=0 reflection maps elsewhere.
+  const std::size_t y_plane = 1, side = 3;
   ASSERT_EQ(shape.symmetries[y_plane].name, "y=0 plane");
+  ASSERT_EQ(shape.symmetries.size(), 3u);
+  std::vector<std::size_t> side_vertices;
+  std::vector<unsigned char> side_mask(nv, 0);
+  const std::vector<Point> pts = vertex_points(shape.mesh);
+  for(std::size_t v = 0; v < nv && side_vertices.size() < 20; ++v)
+    if(pts[v].x() > 0.2)
+    {
+      side_vertices.push_back(v);
+      side_mask[v] = 1;
+    }
+  ASSERT_EQ(side_vertices.size(), 20u);
   for(const std::vector<std::size_t>& below : std::vector<std::vector<std::size_t>>{
-        {y_plane, z_plane, x_plane}, std::vector<std::size_t>(20, y_plane), {z_plane}})
+        {side, y_plane, z_plane, x_plane}, std::vector<std::size_t>(20, y_plane), {z_plane}})
   {
     const std::size_t above = below.size() == 1 ? z_plane : x_plane;
     std::vector<IRS::internal::Working_curve> curves = {curve(above)};
@@ -558,6 +571,14 @@ TEST(Curves, ASymmetryThatKeepsTheCoarseEigenfunctionsGivesWay)
                     std::vector<std::size_t>& p) {
       if(asked == below.size()) return false;
       const std::size_t k = below[asked++];
+      if(k == side)
+      {
+        w = working_curve(side_vertices);
+        w.pair = side;
+        mask = side_mask;
+        p = identity;
+        return true;
+      }
       w = curve(k);
       mask = all;
       p = partner(k);
@@ -565,9 +586,9 @@ TEST(Curves, ASymmetryThatKeepsTheCoarseEigenfunctionsGivesWay)
     };
     IRS::internal::remove_dominated_curves(m, 0.5, 3. * shape.mean_edge_length, curves, masks, partners, more);
     ASSERT_EQ(curves.size(), 1u);
-    if(below.size() == 3)
+    if(below.size() == 4)
     {
-      EXPECT_EQ(asked, 2u);
+      EXPECT_EQ(asked, 3u);
       EXPECT_EQ(curves[0].pair, z_plane);
       EXPECT_EQ(partners[0], partner(z_plane));
     }

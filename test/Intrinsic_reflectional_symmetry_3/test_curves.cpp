@@ -559,49 +559,37 @@ TEST(Curves, ASymmetryThatKeepsTheCoarseEigenfunctionsGivesWay)
       side_mask[v] = 1;
     }
   ASSERT_EQ(side_vertices.size(), 20u);
-  for(const std::vector<std::size_t>& below : std::vector<std::vector<std::size_t>>{
-        {side, y_plane, z_plane, x_plane}, std::vector<std::size_t>(20, y_plane), {z_plane}})
+  struct Case
   {
-    const std::size_t above = below.size() == 1 ? z_plane : x_plane;
-    std::vector<IRS::internal::Working_curve> curves = {curve(above)};
+    std::size_t above;              // the curve above the rule
+    std::vector<std::size_t> below; // the boundaries below it, in order
+    std::size_t asked, kept;        // expected: how many are asked for, the curve kept
+  };
+  const std::vector<Case> cases = {
+    {x_plane, {side, y_plane, z_plane, x_plane}, 3, z_plane},
+    {x_plane, std::vector<std::size_t>(20, y_plane), IRS::internal::coarse_identity_horizon - 1, x_plane},
+    {z_plane, {z_plane}, 0, z_plane}};
+  for(const Case& c : cases)
+  {
+    std::vector<IRS::internal::Working_curve> curves = {curve(c.above)};
     std::vector<std::vector<unsigned char>> masks = {all};
-    std::vector<std::vector<std::size_t>> partners = {partner(above)};
+    std::vector<std::vector<std::size_t>> partners = {partner(c.above)};
     std::size_t asked = 0;
     auto more = [&](IRS::internal::Working_curve& w, std::vector<unsigned char>& mask,
                     std::vector<std::size_t>& p) {
-      if(asked == below.size()) return false;
-      const std::size_t k = below[asked++];
-      if(k == side)
-      {
-        w = working_curve(side_vertices);
-        w.pair = side;
-        mask = side_mask;
-        p = identity;
-        return true;
-      }
-      w = curve(k);
-      mask = all;
-      p = partner(k);
+      if(asked == c.below.size()) return false;
+      const std::size_t k = c.below[asked++];
+      w = k == side ? working_curve(side_vertices) : curve(k);
+      w.pair = k;
+      mask = k == side ? side_mask : all;
+      p = k == side ? identity : partner(k);
       return true;
     };
     IRS::internal::remove_dominated_curves(m, 0.5, 3. * shape.mean_edge_length, curves, masks, partners, more);
-    ASSERT_EQ(curves.size(), 1u);
-    if(below.size() == 4)
-    {
-      EXPECT_EQ(asked, 3u);
-      EXPECT_EQ(curves[0].pair, z_plane);
-      EXPECT_EQ(partners[0], partner(z_plane));
-    }
-    else if(below.size() == 20)
-    {
-      EXPECT_EQ(asked, IRS::internal::coarse_identity_horizon - 1);
-      EXPECT_EQ(curves[0].pair, x_plane);
-    }
-    else
-    {
-      EXPECT_EQ(asked, 0u);
-      EXPECT_EQ(curves[0].pair, z_plane);
-    }
+    ASSERT_EQ(curves.size(), 1u) << "above: " << c.above;
+    EXPECT_EQ(asked, c.asked) << "above: " << c.above;
+    EXPECT_EQ(curves[0].pair, c.kept) << "above: " << c.above;
+    EXPECT_EQ(partners[0], partner(c.kept)) << "above: " << c.above;
   }
 }
 

@@ -347,7 +347,7 @@ inline std::size_t count_set(const std::vector<unsigned char>& x)
 }
 
 /// the first non-constant Laplace eigenfunctions that
-/// `flips_coarse_eigenfunction()` looks at
+/// `coarse_functional_map()` looks at
 constexpr std::size_t coarse_eigenfunctions = 6;
 
 /// The functional map of a reflection (the mirror partner of every vertex)

@@ -545,8 +545,12 @@ TEST(Curves, ASymmetryThatKeepsTheCoarseEigenfunctionsGivesWay)
   // coarse_identity_horizon boundaries in all, and none when the kept curve
   // already flips one. A boundary below the rule that no kept curve
   // dominates is not kept: `side`, a curve on the x > 0 side whose part is
-  // itself, which the x=0 reflection maps elsewhere.
-  const std::size_t y_plane = 1, side = 3;
+  // itself, which the x=0 reflection maps elsewhere. A curve whose
+  // reflection is the identity (`fixed`: on the x > 0 side, every vertex its
+  // own partner, holding everywhere) is no symmetry: above the rule it is
+  // not kept, so it does not keep z=0 (which it would dominate too) from
+  // replacing x=0.
+  const std::size_t y_plane = 1, side = 3, fixed = 4;
   ASSERT_EQ(shape.symmetries[y_plane].name, "y=0 plane");
   ASSERT_EQ(shape.symmetries.size(), 3u);
   std::vector<std::size_t> side_vertices;
@@ -559,38 +563,56 @@ TEST(Curves, ASymmetryThatKeepsTheCoarseEigenfunctionsGivesWay)
       side_mask[v] = 1;
     }
   ASSERT_EQ(side_vertices.size(), 20u);
+  // curve k with its support mask and partners
+  auto offered = [&](std::size_t k, IRS::internal::Working_curve& w, std::vector<unsigned char>& mask,
+                     std::vector<std::size_t>& p) {
+    w = (k == side || k == fixed) ? working_curve(side_vertices) : curve(k);
+    w.pair = k;
+    mask = k == side ? side_mask : all;
+    p = k == fixed ? identity : partner(k == side ? x_plane : k);
+  };
   struct Case
   {
-    std::size_t above;              // the curve above the rule
+    std::vector<std::size_t> above; // the curves above the rule, in order
     std::vector<std::size_t> below; // the boundaries below it, in order
     std::size_t asked, kept;        // expected: how many are asked for, the curve kept
   };
   const std::vector<Case> cases = {
-    {x_plane, {side, y_plane, z_plane, x_plane}, 3, z_plane},
-    {x_plane, std::vector<std::size_t>(20, y_plane), IRS::internal::coarse_identity_horizon - 1, x_plane},
-    {z_plane, {z_plane}, 0, z_plane}};
+    {{x_plane}, {side, y_plane, z_plane, x_plane}, 3, z_plane},
+    {{x_plane}, std::vector<std::size_t>(20, y_plane), IRS::internal::coarse_identity_horizon - 1, x_plane},
+    {{z_plane}, {z_plane}, 0, z_plane},
+    {{x_plane, fixed}, {fixed, z_plane}, 2, z_plane}};
   for(const Case& c : cases)
   {
-    std::vector<IRS::internal::Working_curve> curves = {curve(c.above)};
-    std::vector<std::vector<unsigned char>> masks = {all};
-    std::vector<std::vector<std::size_t>> partners = {partner(c.above)};
+    const std::size_t first = c.above.front();
+    std::vector<IRS::internal::Working_curve> curves(c.above.size());
+    std::vector<std::vector<unsigned char>> masks(c.above.size());
+    std::vector<std::vector<std::size_t>> partners(c.above.size());
+    for(std::size_t i = 0; i < c.above.size(); ++i) offered(c.above[i], curves[i], masks[i], partners[i]);
     std::size_t asked = 0;
     auto more = [&](IRS::internal::Working_curve& w, std::vector<unsigned char>& mask,
                     std::vector<std::size_t>& p) {
       if(asked == c.below.size()) return false;
-      const std::size_t k = c.below[asked++];
-      w = k == side ? working_curve(side_vertices) : curve(k);
-      w.pair = k;
-      mask = k == side ? side_mask : all;
-      p = k == side ? identity : partner(k);
+      offered(c.below[asked++], w, mask, p);
       return true;
     };
     IRS::internal::remove_dominated_curves(m, 0.5, 3. * shape.mean_edge_length, curves, masks, partners, more);
-    ASSERT_EQ(curves.size(), 1u) << "above: " << c.above;
-    EXPECT_EQ(asked, c.asked) << "above: " << c.above;
-    EXPECT_EQ(curves[0].pair, c.kept) << "above: " << c.above;
-    EXPECT_EQ(partners[0], partner(c.kept)) << "above: " << c.above;
+    ASSERT_EQ(curves.size(), 1u) << "first above: " << first << ", " << c.above.size() << " above";
+    EXPECT_EQ(asked, c.asked) << "first above: " << first << ", " << c.above.size() << " above";
+    EXPECT_EQ(curves[0].pair, c.kept) << "first above: " << first << ", " << c.above.size() << " above";
+    EXPECT_EQ(partners[0], partner(c.kept)) << "first above: " << first << ", " << c.above.size() << " above";
   }
+  // the test of an identity on its part
+  std::vector<unsigned char> side_part(nv, 0);
+  for(std::size_t v : side_vertices) side_part[v] = 1;
+  EXPECT_TRUE(IRS::internal::is_identity_on(side_part, identity));
+  EXPECT_FALSE(IRS::internal::is_identity_on(side_part, partner(x_plane)));
+  EXPECT_FALSE(IRS::internal::is_identity_on(all, partner(z_plane)));
+  std::vector<std::size_t> half_fixed = partner(x_plane);
+  for(std::size_t i = 0; i < side_vertices.size() / 2; ++i) half_fixed[side_vertices[i]] = side_vertices[i];
+  EXPECT_FALSE(IRS::internal::is_identity_on(side_part, half_fixed)); // half: not more than half
+  half_fixed[side_vertices.back()] = side_vertices.back();
+  EXPECT_TRUE(IRS::internal::is_identity_on(side_part, half_fixed));
 }
 
 TEST(Curves, NestedSymmetriesFindTheLimbsOfTheStickFigure)

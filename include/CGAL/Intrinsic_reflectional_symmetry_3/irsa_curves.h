@@ -262,7 +262,10 @@ inline Irsa_curve to_irsa_curve(const Working_curve& w, const Irsa_voting_result
 /// mirror planes of an ellipsoid): the PIRS regions partition the shape, so
 /// it is removed. A part that the better curve's reflection maps elsewhere
 /// (a leg, mapped to the other leg by the body's reflection) is a nested
-/// symmetry and its curve is kept. Of two such symmetries of the same part
+/// symmetry and its curve is kept. A curve whose reflection is the identity
+/// on its part (more than half of the part's vertices are their own
+/// partner) is no symmetry: its reflection holds everywhere, so it would
+/// dominate every other curve; it is dropped. Of two symmetries of the same part
 /// the better ranked one is kept, unless its reflection flips none of the
 /// first six non-constant eigenfunctions of the mesh's Laplacian (cotangent
 /// weights, lumped masses) while the other's flips one: the other then takes

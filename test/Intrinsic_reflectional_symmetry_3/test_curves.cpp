@@ -582,13 +582,14 @@ TEST(Curves, ASymmetryThatKeepsTheCoarseEigenfunctionsGivesWay)
     {{x_plane}, std::vector<std::size_t>(20, y_plane), IRS::internal::coarse_identity_horizon - 1, x_plane},
     {{z_plane}, {z_plane}, 0, z_plane},
     {{x_plane, fixed}, {fixed, z_plane}, 2, z_plane}};
-  for(const Case& c : cases)
+  for(std::size_t i = 0; i < cases.size(); ++i)
   {
-    const std::size_t first = c.above.front();
+    SCOPED_TRACE("case " + std::to_string(i));
+    const Case& c = cases[i];
     std::vector<IRS::internal::Working_curve> curves(c.above.size());
     std::vector<std::vector<unsigned char>> masks(c.above.size());
     std::vector<std::vector<std::size_t>> partners(c.above.size());
-    for(std::size_t i = 0; i < c.above.size(); ++i) offered(c.above[i], curves[i], masks[i], partners[i]);
+    for(std::size_t j = 0; j < c.above.size(); ++j) offered(c.above[j], curves[j], masks[j], partners[j]);
     std::size_t asked = 0;
     auto more = [&](IRS::internal::Working_curve& w, std::vector<unsigned char>& mask,
                     std::vector<std::size_t>& p) {
@@ -597,10 +598,10 @@ TEST(Curves, ASymmetryThatKeepsTheCoarseEigenfunctionsGivesWay)
       return true;
     };
     IRS::internal::remove_dominated_curves(m, 0.5, 3. * shape.mean_edge_length, curves, masks, partners, more);
-    ASSERT_EQ(curves.size(), 1u) << "first above: " << first << ", " << c.above.size() << " above";
-    EXPECT_EQ(asked, c.asked) << "first above: " << first << ", " << c.above.size() << " above";
-    EXPECT_EQ(curves[0].pair, c.kept) << "first above: " << first << ", " << c.above.size() << " above";
-    EXPECT_EQ(partners[0], partner(c.kept)) << "first above: " << first << ", " << c.above.size() << " above";
+    ASSERT_EQ(curves.size(), 1u);
+    EXPECT_EQ(asked, c.asked);
+    EXPECT_EQ(curves[0].pair, c.kept);
+    EXPECT_EQ(partners[0], partner(c.kept));
   }
   // the test of an identity on its part
   std::vector<unsigned char> side_part(nv, 0);

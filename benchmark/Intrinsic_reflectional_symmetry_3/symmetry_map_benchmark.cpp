@@ -96,6 +96,7 @@ namespace fs = std::filesystem;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef Mesh::Vertex_index Vertex;
+typedef Mesh::size_type Index;
 
 namespace {
 
@@ -279,19 +280,19 @@ Metrics evaluate(const Mesh& m, const std::vector<std::pair<std::size_t, std::si
       }
       if(r.partner[x] < 0) continue;
       ++out.covered;
-      const double image_distortion = isometry.distortion(x, std::size_t(r.partner[x]));
+      const std::size_t image = std::size_t(r.partner[x]);
+      const double image_distortion = isometry.distortion(x, image);
       // one search from the image gives its distance to y (the error) and to x
-      dijkstra.distances_from(std::size_t(r.partner[x]), d.data());
+      dijkstra.distances_from(image, d.data());
       const double e = double(d[y]) / sqrt_area;
       out.error_sum += e;
       out.correct += (e <= kim_threshold);
       out.isometric_correct += (isometric && e <= kim_threshold);
       out.failed_image_more_isometric += (e > kim_threshold && image_distortion < ground_truth_distortion);
       out.within_025 += (e <= 0.25);
-      out.failed_at_contact +=
-        (e > kim_threshold &&
-         std::sqrt(CGAL::to_double(CGAL::squared_distance(m.point(Vertex(Mesh::size_type(r.partner[x]))), m.point(Vertex(Mesh::size_type(y)))))) <=
-           contact_tolerance * sqrt_area);
+      const double apart_in_space =
+        std::sqrt(CGAL::to_double(CGAL::squared_distance(m.point(Vertex(Index(image))), m.point(Vertex(Index(y))))));
+      out.failed_at_contact += (e > kim_threshold && apart_in_space <= contact_tolerance * sqrt_area);
       if(e > kim_threshold && x != y)
       {
         // a failure that left x on its own side (x mapped near itself) rather than a misplaced mirror image

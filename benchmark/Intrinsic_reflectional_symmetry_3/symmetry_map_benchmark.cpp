@@ -186,25 +186,14 @@ struct Metrics
   double le025() const { return checks ? 100. * double(within_025) / double(checks) : 0.; }
   double mean_error() const { return covered ? error_sum / double(covered) : std::numeric_limits<double>::quiet_NaN(); }
   double isometric_share() const { return checks ? 100. * double(isometric_checks) / double(checks) : 0.; }
-  double cr_isometric() const
+  double cr_isometric() const { return percent_or_nan(isometric_correct, isometric_checks); }
+  double failed_more_isometric() const { return percent_or_nan(failed_image_more_isometric, checks - correct); }
+  double at_contact() const { return percent_or_nan(failed_at_contact, checks - correct); }
+  double own_side() const { return percent_or_nan(failed_own_side, failed); }
+  // a share of the failures or of a subset of the checks: undefined (nan, "nan" in the table) when there are none
+  static double percent_or_nan(std::size_t part, std::size_t whole)
   {
-    return isometric_checks ? 100. * double(isometric_correct) / double(isometric_checks)
-                            : std::numeric_limits<double>::quiet_NaN();
-  }
-  double failed_more_isometric() const
-  {
-    const std::size_t failures = checks - correct;
-    return failures ? 100. * double(failed_image_more_isometric) / double(failures)
-                    : std::numeric_limits<double>::quiet_NaN();
-  }
-  double at_contact() const
-  {
-    const std::size_t failures = checks - correct;
-    return failures ? 100. * double(failed_at_contact) / double(failures) : std::numeric_limits<double>::quiet_NaN();
-  }
-  double own_side() const
-  {
-    return failed ? 100. * double(failed_own_side) / double(failed) : std::numeric_limits<double>::quiet_NaN();
+    return whole ? 100. * double(part) / double(whole) : std::numeric_limits<double>::quiet_NaN();
   }
 };
 

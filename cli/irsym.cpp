@@ -54,6 +54,14 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
 namespace {
 
+// report.json's map_suspect: above this fixed_point_share. Measured at seed 0
+// (symmetry_map_benchmark, column fixed%): 0-0.6 % on the 19 FAUST shapes,
+// at most 1.3 % on the SCAPE meshes mapped at least 90 % right, 11-60 % on 7
+// of the 8 others; 5.7 % on the generated two snowmen, whose map is right but
+// whose curve is pruned short of part of the axis (axis points far from the
+// curve, each near its image)
+const double suspect_fixed_point_share = 0.1;
+
 const char* usage_text =
 R"(irsym - partial intrinsic reflectional symmetry of a closed triangle mesh
 
@@ -91,7 +99,9 @@ usage: irsym MESH --out DIR [options]
   --help               this text
 
 outputs in DIR:
-  report.json          input statistics, parameters, time and peak memory per stage
+  report.json          input statistics, parameters, time and peak memory per stage;
+                       results.map_suspect when the map keeps more than 10 % of the
+                       vertices far from the curves in place (fixed_point_share)
   samples.txt          the samples, as input vertex ids (one per line)
   tau.txt              the IRSA transform, one value per input vertex (input order)
   transform.ply        input mesh coloured by the IRSA transform (vertex scalar 'transform')
@@ -466,6 +476,16 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   const std::size_t mapped_vertices = IRS::symmetric_vertex_map(
     work, D, curves, boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, work)),
     IRS::parameters::callback(within_limit));
+  // a reflection fixes its axis alone: a map that keeps parts far from the
+  // curves in place (a limb onto itself) is suspect (fixed_point_share())
+  const double fixed_share = IRS::fixed_point_share(
+    work, curves, boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, work)));
+  const bool map_suspect = fixed_share > suspect_fixed_point_share;
+  if(map_suspect)
+    std::cerr << "irsym: warning: the symmetric map keeps " << 100. * fixed_share
+              << " % of the vertices far from the curves in place, where a reflection moves every point off its "
+                 "axis: parts of the map are likely wrong (a limb mapped onto itself); another --seed may do "
+                 "better\n";
   log.stop();
 
   log.start("segmentation");
@@ -539,6 +559,8 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
      .add("curves", curves.size())
      .add("faces_in_regions", region_faces)
      .add("vertices_with_partner", mapped_vertices)
+     .add("fixed_point_share", fixed_share)
+     .add("map_suspect", map_suspect)
      .add("segments", segments);
   irsym::Json curve_list = irsym::Json::array();
   for(const IRS::Irsa_curve& c : curves)

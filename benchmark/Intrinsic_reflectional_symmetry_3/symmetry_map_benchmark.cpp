@@ -19,7 +19,9 @@
 // kind of failure a shape has: of the off-axis checks that fail, the share
 // whose image lies nearer x itself than its mirror y (x kept on its own side,
 // the map degenerating to the identity there) rather than a misplaced mirror
-// image.
+// image. fixed% needs no ground truth: the package's fixed_point_share() of
+// the map (the share of the vertices far from the curves that are their own
+// partner, in %; a reflection fixes its axis alone).
 //
 // Where the ground truth itself is not an isometry. FAUST's mirror pairs come
 // from a registered template, and a pose stretches skin unevenly, so a
@@ -120,6 +122,7 @@ struct Pipeline_result
   std::vector<std::ptrdiff_t> partner; // by vertex index
   std::vector<std::ptrdiff_t> partner_without_spectral; // number_of_eigenfunctions(0)
   std::size_t similar_pairs = 0, voting_pairs = 0, region_faces = 0;
+  double fixed_share = 0.; // fixed_point_share() of the map, not timed
   double seconds[6] = {0., 0., 0., 0., 0., 0.}; // geodesics, signatures, voting, curves, map, total
 };
 
@@ -163,6 +166,7 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
   for(Vertex v : vertices(m)) r.partner[v.idx()] = get(partner, v);
   r.seconds[4] = t.time();
   r.seconds[5] = total.time();
+  r.fixed_share = IRS::fixed_point_share(m, r.curves, partner);
 
   IRS::symmetric_vertex_map(m, D, r.curves, partner, IRS::parameters::number_of_eigenfunctions(0));
   r.partner_without_spectral.assign(num_vertices(m), -1);
@@ -346,7 +350,7 @@ void print_header()
             << std::setw(9) << "mean e" << std::setw(10) << "axis mean" << std::setw(9) << "axis max"
             << std::setw(8) << "geod s" << std::setw(7) << "sig s" << std::setw(8) << "vote s" << std::setw(8)
             << "curve s" << std::setw(7) << "map s" << std::setw(8) << "total s" << std::setw(8) << "own%" << std::setw(7) << "iso%" << std::setw(8) << "CRiso%"
-            << std::setw(11) << "fail>iso%" << std::setw(10) << "contact%" << '\n';
+            << std::setw(11) << "fail>iso%" << std::setw(10) << "contact%" << std::setw(8) << "fixed%" << '\n';
 }
 
 void print_row(const std::string& name, const Mesh& m, std::size_t samples, const Pipeline_result& r, const Metrics& e)
@@ -359,7 +363,8 @@ void print_row(const std::string& name, const Mesh& m, std::size_t samples, cons
             << r.seconds[2] << std::setw(8) << r.seconds[3] << std::setw(7) << r.seconds[4] << std::setw(8)
             << r.seconds[5] << std::setprecision(1) << std::setw(8) << e.own_side() << std::setw(7) << e.isometric_share()
             << std::setprecision(2) << std::setw(8) << e.cr_isometric() << std::setprecision(1) << std::setw(11)
-            << e.failed_more_isometric() << std::setw(10) << e.at_contact() << std::endl;
+            << e.failed_more_isometric() << std::setw(10) << e.at_contact() << std::setw(8) << 100. * r.fixed_share
+            << std::endl;
 }
 
 struct Summary

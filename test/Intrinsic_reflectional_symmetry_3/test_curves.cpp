@@ -912,6 +912,57 @@ TEST(Curves, SpectralRefinementMendsAWrongPatch)
   EXPECT_EQ(best, sequential); // the same at any thread count
 }
 
+TEST(Curves, FixedPointShareCountsVerticesKeptInPlaceFarFromTheCurve)
+{
+  // the x=0 mirror map of an ellipsoid, its axis as the curve: the true map
+  // fixes nothing far from the axis, the identity everything, and a map with
+  // one quadrant of one side kept in place about that quadrant's share
+  const auto shape = IRS::generate_ellipsoid<Mesh>(2000);
+  const std::vector<Point> pts = vertex_points(shape.mesh);
+  const IRS::Known_symmetry& s = shape.symmetries[0];
+  ASSERT_EQ(s.name, "x=0 plane");
+  std::vector<IRS::Irsa_curve> curves(1);
+  curves[0].polylines.push_back(s.axis);
+  const std::size_t n = pts.size();
+  std::vector<long> mirror(n), identity(n), patched(n), unmapped(n, -1);
+  double xmax = 0.;
+  for(const Point& p : pts) xmax = (std::max)(xmax, p.x());
+  std::size_t patch = 0, far_side = 0;
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    ASSERT_GE(s.mirror[v], 0);
+    mirror[v] = long(s.mirror[v]);
+    identity[v] = long(v);
+    const bool in_patch = pts[v].x() > 0.25 * xmax && pts[v].y() > 0.;
+    patched[v] = in_patch ? long(v) : mirror[v];
+    patch += in_patch;
+    far_side += std::abs(pts[v].x()) > 0.25 * xmax;
+  }
+  auto share = [&](std::vector<long>& map) {
+    return IRS::fixed_point_share(shape.mesh, curves,
+                                  boost::make_iterator_property_map(map.begin(), get(boost::vertex_index, shape.mesh)));
+  };
+  const double of_mirror = share(mirror), of_identity = share(identity), of_patched = share(patched);
+  std::cout << "[ fixed point share ] ellipsoid: true mirror " << 100. * of_mirror << " %, identity "
+            << 100. * of_identity << " %, a quadrant of one side in place " << 100. * of_patched << " % ("
+            << patch << " vertices, " << 100. * double(patch) / double(far_side) << " % of those beyond |x| = "
+            << "xmax / 4)" << std::endl;
+  EXPECT_EQ(of_mirror, 0.);
+  EXPECT_EQ(of_identity, 1.);
+  EXPECT_GT(of_patched, 0.15);
+  EXPECT_LT(of_patched, 0.35);
+  EXPECT_EQ(share(unmapped), 0.); // no vertex with a partner: nothing to count
+
+  // bad input: a partner that is no vertex, a curve vertex out of range
+  std::vector<long> bad = mirror;
+  bad[7] = long(n);
+  EXPECT_THROW(share(bad), IRS::Input_error);
+  bad[7] = -2;
+  EXPECT_THROW(share(bad), IRS::Input_error);
+  curves[0].polylines[0].push_back(n);
+  EXPECT_THROW(share(mirror), IRS::Input_error);
+}
+
 TEST(Curves, SpectralRefinementWithSidesMendsHandsMappedToThemselves)
 {
   // the mirror map of the stick figure with the outer half of both arms

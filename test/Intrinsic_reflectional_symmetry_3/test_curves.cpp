@@ -6,7 +6,8 @@
 // deterministic and the same on Surface_mesh and Polyhedron_3; bad input
 // throws Input_error. The spectral refinement of the map: its nearest
 // neighbours against the literal minimum, its basis orthonormal, and a
-// wrong patch of a known mirror map mended.
+// wrong patch of a known mirror map mended. fixed_point_share() on a known
+// mirror map, the identity and a map with a patch held in place.
 //
 // Similar pairs: the bent capsule and the ellipsoid run the package's whole
 // pipeline (SDF signatures and the similarity filter). The other shapes are

@@ -20,8 +20,8 @@
 // whose image lies nearer x itself than its mirror y (x kept on its own side,
 // the map degenerating to the identity there) rather than a misplaced mirror
 // image. fixed% needs no ground truth: the package's fixed_point_share() of
-// the map (the share of the vertices far from the curves that are their own
-// partner, in %; a reflection fixes its axis alone).
+// the map (the share of the vertices far from the curves whose partner lies
+// near themselves, in %; a reflection fixes its axis alone).
 //
 // Where the ground truth itself is not an isometry. FAUST's mirror pairs come
 // from a registered template, and a pose stretches skin unevenly, so a

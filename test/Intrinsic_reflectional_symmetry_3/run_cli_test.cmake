@@ -31,6 +31,13 @@ foreach(key stages input parameters results similar_sample_pairs curves peak_mem
     message(FATAL_ERROR "report.json lacks '${key}': ${jerr}\n${report}")
   endif()
 endforeach()
+# the snowman's map is right: it holds no part in place far from the curve
+string(JSON fixed ERROR_VARIABLE jerr GET "${report}" results fixed_point_share)
+string(JSON suspect ERROR_VARIABLE jerr2 GET "${report}" results map_suspect)
+if(jerr OR jerr2 OR NOT suspect STREQUAL "OFF" OR fixed GREATER 0.02 OR fixed LESS 0)
+  message(FATAL_ERROR "report.json: fixed_point_share '${fixed}', map_suspect '${suspect}', expected at most 0.02 "
+                      "and false ${jerr} ${jerr2}")
+endif()
 # every curve says whether it is nested (the run is without --nested-symmetries)
 string(JSON ncurves ERROR_VARIABLE jerr LENGTH "${report}" results curve_details)
 if(jerr OR ncurves LESS 1)

@@ -54,13 +54,21 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
 namespace {
 
-// report.json's map_suspect: above this fixed_point_share. Measured at seed 0
-// (symmetry_map_benchmark, column fixed%): 0-0.6 % on the 19 FAUST shapes,
-// at most 1.3 % on the SCAPE meshes mapped at least 90 % right, 11-60 % on 7
-// of the 8 others; 5.7 % on the generated two snowmen, whose map is right but
-// whose curve is pruned short of part of the axis (axis points far from the
-// curve, each near its image)
-const double suspect_fixed_point_share = 0.1;
+// What one seed of the samples gives, from the samples to the symmetric map;
+// --tries keeps the run whose map has the lowest fixed_point_share()
+struct Seed_run
+{
+  unsigned seed = 0;
+  std::vector<std::size_t> samples;
+  IRS::Geodesic_distance_matrix D;
+  std::size_t similar_pairs = 0;
+  IRS::Irsa_voting_result voting;
+  std::vector<double> tau;
+  std::vector<IRS::Irsa_curve> curves;
+  std::vector<long> region, partner;
+  std::size_t region_faces = 0, mapped_vertices = 0;
+  double fixed_share = 0.;
+};
 
 const char* usage_text =
 R"(irsym - partial intrinsic reflectional symmetry of a closed triangle mesh
@@ -76,6 +84,11 @@ usage: irsym MESH --out DIR [options]
   --out DIR            output directory (created if missing)
   --samples N          number of samples (default: min(3000, vertices / 4), the paper's ratio)
   --seed S             random seed (default: 0); same seed, same result
+  --tries N            where the symmetric map is suspect (results.map_suspect below), run
+                       again from the samples on with seeds S+1, S+2, ..., at most N runs in
+                       all, and keep the run whose map has the lowest fixed_point_share
+                       (default: 3; 1 runs seed S alone). A suspect map is rare on shapes
+                       whose symmetry the pose does not break: no retry on FAUST's 19 humans
   --geodesics G        geodesic oracle: heat (default), exact or dijkstra
   --threads T          worker threads (default: all cores); results do not depend on it
   --target-vertices N  first remesh or decimate to about N vertices (default: keep the mesh)
@@ -101,7 +114,9 @@ usage: irsym MESH --out DIR [options]
 outputs in DIR:
   report.json          input statistics, parameters, time and peak memory per stage;
                        results.map_suspect when the map keeps more than 10 % of the
-                       vertices far from the curves in place (fixed_point_share)
+                       vertices far from the curves in place (fixed_point_share);
+                       results.tries: seed and fixed_point_share of each run, and
+                       results.seed_kept: the seed whose run all outputs come from
   samples.txt          the samples, as input vertex ids (one per line)
   tau.txt              the IRSA transform, one value per input vertex (input order)
   transform.ply        input mesh coloured by the IRSA transform (vertex scalar 'transform')
@@ -131,6 +146,7 @@ struct Options
   std::string mesh_path, shape, out_dir, geodesics = "heat";
   std::optional<long long> samples;
   unsigned seed = 0;
+  int tries = 3; // seeds tried while the map is suspect
   int threads = 0;
   long long target_vertices = 0, max_voting_pairs = 0; // 0: no cap
   double time_limit = 0.; // seconds, 0: none
@@ -140,7 +156,8 @@ struct Options
 
 struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
 
-long long parse_integer(const std::string& option, const std::string& text, long long lo)
+long long parse_integer(const std::string& option, const std::string& text, long long lo,
+                        long long hi = std::numeric_limits<int>::max())
 {
   std::size_t used = 0;
   long long v = 0;
@@ -149,6 +166,8 @@ long long parse_integer(const std::string& option, const std::string& text, long
     throw Usage_error(option + " expects an integer, got '" + text + "'");
   if(v < lo)
     throw Usage_error(option + " must be at least " + std::to_string(lo) + ", got " + text);
+  if(v > hi)
+    throw Usage_error(option + " must be at most " + std::to_string(hi) + ", got " + text);
   return v;
 }
 
@@ -175,7 +194,8 @@ Options parse_options(int argc, char** argv)
     else if(a == "--out") o.out_dir = value();
     else if(a == "--shape") o.shape = value();
     else if(a == "--samples") o.samples = parse_integer(a, value(), 1);
-    else if(a == "--seed") o.seed = unsigned(parse_integer(a, value(), 0));
+    else if(a == "--seed") o.seed = unsigned(parse_integer(a, value(), 0, std::numeric_limits<unsigned>::max()));
+    else if(a == "--tries") o.tries = int(parse_integer(a, value(), 1, 100));
     else if(a == "--threads") o.threads = int(parse_integer(a, value(), 1));
     else if(a == "--target-vertices") o.target_vertices = parse_integer(a, value(), 4);
     else if(a == "--max-voting-pairs") o.max_voting_pairs = parse_integer(a, value(), 1);
@@ -376,6 +396,74 @@ irsym::Json repair_outputs(const Mesh& work, const IRS::Geodesic_distance_matrix
   return j;
 }
 
+// the stages that depend on the seed: samples, geodesic matrix, signatures,
+// voting, curves, regions and map; stage names carry the seed after the first try
+template <typename Oracle>
+Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, const std::vector<double>& vertex_sdf,
+                  const std::vector<double>& areas, unsigned seed, const std::function<bool(double)>& within_limit,
+                  irsym::Stage_log& log)
+{
+  const std::string suffix = seed == opt.seed ? "" : " (seed " + std::to_string(seed) + ")";
+  Seed_run r;
+  r.seed = seed;
+  log.start("sampling" + suffix);
+  r.samples = opt.samples
+    ? IRS::farthest_point_samples(work, IRS::parameters::number_of_samples(std::size_t(*opt.samples)).random_seed(seed))
+    : IRS::farthest_point_samples(work, IRS::parameters::random_seed(seed));
+  log.stop();
+
+  log.start("geodesic matrix" + suffix);
+  r.D = IRS::compute_geodesic_distance_matrix(oracle, r.samples, IRS::parameters::callback(within_limit));
+  log.stop();
+
+  log.start("signatures" + suffix);
+  const IRS::Sdf_signatures signatures = IRS::sdf_signatures(vertex_sdf, areas, r.D);
+  std::vector<std::pair<std::size_t, std::size_t>> similar;
+  IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
+  r.similar_pairs = similar.size();
+  log.stop();
+
+  log.start("IRSA transform (voting)" + suffix);
+  // the voting's cost grows with its pairs times the similar pairs: a hint
+  // where that many is unusual (PSB's table 156 at 1,000 samples: 159,402
+  // similar pairs, 22 s on two cores; typical meshes: a few thousand)
+  const std::size_t many_similar_pairs = 100000;
+  if(opt.max_voting_pairs == 0 && similar.size() > many_similar_pairs)
+    std::cerr << "[irsym] " << similar.size() << " of " << r.samples.size() * (r.samples.size() - 1) / 2
+              << " sample pairs pass the similarity filter (a nearly uniform SDF): the voting may take minutes;"
+                 " --max-voting-pairs N lets only N of them vote\n";
+  r.tau.assign(num_vertices(work), 0.);
+  const std::size_t cap = opt.max_voting_pairs > 0 ? std::size_t(opt.max_voting_pairs)
+                                                   : std::numeric_limits<std::size_t>::max(); // the default: no cap
+  r.voting = IRS::compute_irsa_transform(
+    work, r.D, similar, boost::make_iterator_property_map(r.tau.begin(), get(boost::vertex_index, work)),
+    IRS::parameters::random_seed(seed).maximum_number_of_voting_pairs(cap).callback(within_limit));
+  log.stop();
+
+  log.start("IRSA curves" + suffix);
+  IRS::extract_irsa_curves(work, r.D, r.voting,
+                           boost::make_iterator_property_map(r.tau.begin(), get(boost::vertex_index, work)),
+                           std::back_inserter(r.curves),
+                           IRS::parameters::nested_symmetries(opt.nested).callback(within_limit));
+  log.stop();
+
+  log.start("symmetric regions and map" + suffix);
+  r.region.assign(num_faces(work), -1);
+  r.partner.assign(num_vertices(work), -1);
+  r.region_faces = IRS::symmetric_regions(
+    work, r.D, r.curves, boost::make_iterator_property_map(r.region.begin(), get(boost::face_index, work)),
+    IRS::parameters::callback(within_limit));
+  r.mapped_vertices = IRS::symmetric_vertex_map(
+    work, r.D, r.curves, boost::make_iterator_property_map(r.partner.begin(), get(boost::vertex_index, work)),
+    IRS::parameters::callback(within_limit));
+  // a reflection fixes its axis alone: a map that keeps parts far from the
+  // curves in place (a limb onto itself) is suspect (fixed_point_share())
+  r.fixed_share = IRS::fixed_point_share(
+    work, r.curves, boost::make_iterator_property_map(r.partner.begin(), get(boost::vertex_index, work)));
+  log.stop();
+  return r;
+}
+
 template <typename Oracle>
 int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, irsym::Json& report)
 {
@@ -421,72 +509,43 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   const Mesh& work = prepared.working_mesh();
   log.stop();
 
-  log.start("sampling");
-  const std::vector<std::size_t> samples = opt.samples
-    ? IRS::farthest_point_samples(work, IRS::parameters::number_of_samples(std::size_t(*opt.samples)).random_seed(opt.seed))
-    : IRS::farthest_point_samples(work, IRS::parameters::random_seed(opt.seed));
-  log.stop();
-
   log.start("geodesic oracle (" + opt.geodesics + ")");
   const Oracle oracle(work);
   log.stop();
 
-  log.start("geodesic matrix");
-  const IRS::Geodesic_distance_matrix D =
-    IRS::compute_geodesic_distance_matrix(oracle, samples, IRS::parameters::callback(within_limit));
-  log.stop();
-
-  log.start("signatures");
+  // the SDF does not depend on the samples: once for all tries
+  log.start("vertex SDF");
   const std::vector<double> vertex_sdf = IRS::vertex_sdf_values(work);
-  const IRS::Sdf_signatures signatures = IRS::sdf_signatures(vertex_sdf, IRS::vertex_areas(work), D);
-  std::vector<std::pair<std::size_t, std::size_t>> similar;
-  IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
+  const std::vector<double> areas = IRS::vertex_areas(work);
   log.stop();
 
-  log.start("IRSA transform (voting)");
-  // the voting's cost grows with its pairs times the similar pairs: a hint
-  // where that many is unusual (PSB's table 156 at 1,000 samples: 159,402
-  // similar pairs, 22 s on two cores; typical meshes: a few thousand)
-  const std::size_t many_similar_pairs = 100000;
-  if(opt.max_voting_pairs == 0 && similar.size() > many_similar_pairs)
-    std::cerr << "[irsym] " << similar.size() << " of " << samples.size() * (samples.size() - 1) / 2
-              << " sample pairs pass the similarity filter (a nearly uniform SDF): the voting may take minutes;"
-                 " --max-voting-pairs N lets only N of them vote\n";
-  std::vector<double> tau(num_vertices(work), 0.);
-  const std::size_t cap = opt.max_voting_pairs > 0 ? std::size_t(opt.max_voting_pairs)
-                                                   : std::numeric_limits<std::size_t>::max(); // the default: no cap
-  const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(
-    work, D, similar, boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
-    IRS::parameters::random_seed(opt.seed).maximum_number_of_voting_pairs(cap).callback(within_limit));
-  log.stop();
-
-  log.start("IRSA curves");
-  std::vector<IRS::Irsa_curve> curves;
-  IRS::extract_irsa_curves(work, D, voting,
-                           boost::make_iterator_property_map(tau.begin(), get(boost::vertex_index, work)),
-                           std::back_inserter(curves),
-                           IRS::parameters::nested_symmetries(opt.nested).callback(within_limit));
-  log.stop();
-
-  log.start("symmetric regions and map");
-  std::vector<long> region(num_faces(work), -1), partner(num_vertices(work), -1);
-  const std::size_t region_faces = IRS::symmetric_regions(
-    work, D, curves, boost::make_iterator_property_map(region.begin(), get(boost::face_index, work)),
-    IRS::parameters::callback(within_limit));
-  const std::size_t mapped_vertices = IRS::symmetric_vertex_map(
-    work, D, curves, boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, work)),
-    IRS::parameters::callback(within_limit));
-  // a reflection fixes its axis alone: a map that keeps parts far from the
-  // curves in place (a limb onto itself) is suspect (fixed_point_share())
-  const double fixed_share = IRS::fixed_point_share(
-    work, curves, boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, work)));
-  const bool map_suspect = fixed_share > suspect_fixed_point_share;
+  // --tries: another seed where the map is suspect (it holds parts far from
+  // the curves in place); the map with the lowest fixed_point_share() is kept
+  Seed_run kept;
+  irsym::Json tries = irsym::Json::array();
+  for(int t = 0; t < opt.tries; ++t) {
+    Seed_run run = run_seed(opt, work, oracle, vertex_sdf, areas, opt.seed + unsigned(t), within_limit, log);
+    tries.push(irsym::Json::object().add("seed", run.seed).add("curves", run.curves.size())
+                 .add("fixed_point_share", run.fixed_share));
+    if(run.fixed_share > IRS::suspect_fixed_point_share && t + 1 < opt.tries)
+      std::cerr << "[irsym] the symmetric map of seed " << run.seed << " keeps " << 100. * run.fixed_share
+                << " % of the vertices far from the curves in place: trying seed " << run.seed + 1u << '\n';
+    if(t == 0 || run.fixed_share < kept.fixed_share) kept = std::move(run);
+    if(kept.fixed_share <= IRS::suspect_fixed_point_share) break;
+  }
+  const bool map_suspect = kept.fixed_share > IRS::suspect_fixed_point_share;
   if(map_suspect)
-    std::cerr << "irsym: warning: the symmetric map keeps " << 100. * fixed_share
+    std::cerr << "irsym: warning: the symmetric map keeps " << 100. * kept.fixed_share
               << " % of the vertices far from the curves in place, where a reflection moves every point off its "
-                 "axis: parts of the map are likely wrong (a limb mapped onto itself); another --seed may do "
-                 "better\n";
-  log.stop();
+                 "axis: parts of the map are likely wrong (a limb mapped onto itself); more --tries or another "
+                 "--seed may do better\n";
+  const std::vector<std::size_t>& samples = kept.samples;
+  const IRS::Geodesic_distance_matrix& D = kept.D;
+  const IRS::Irsa_voting_result& voting = kept.voting;
+  const std::vector<double>& tau = kept.tau;
+  const std::vector<IRS::Irsa_curve>& curves = kept.curves;
+  const std::vector<long>& region = kept.region;
+  const std::vector<long>& partner = kept.partner;
 
   log.start("segmentation");
   std::vector<long> segment(num_faces(work), -1);
@@ -549,7 +608,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
      .add("samples", samples.size())
      .add("largest_geodesic_distance", D.largest_finite_distance())
      .add("sample_pairs", samples.size() * (samples.size() - 1) / 2)
-     .add("similar_sample_pairs", similar.size())
+     .add("similar_sample_pairs", kept.similar_pairs)
      .add("voting_pairs", voting.number_of_voting_pairs)
      .add("voting_pairs_with_support", voting.voting_pairs.size())
      .add("gaussian_width_sigma", voting.sigma)
@@ -557,10 +616,12 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
      .add("locality_radius", voting.locality_radius)
      .add("largest_tau", *std::max_element(tau.begin(), tau.end()))
      .add("curves", curves.size())
-     .add("faces_in_regions", region_faces)
-     .add("vertices_with_partner", mapped_vertices)
-     .add("fixed_point_share", fixed_share)
+     .add("faces_in_regions", kept.region_faces)
+     .add("vertices_with_partner", kept.mapped_vertices)
+     .add("fixed_point_share", kept.fixed_share)
      .add("map_suspect", map_suspect)
+     .add("seed_kept", kept.seed)
+     .add("tries", tries)
      .add("segments", segments);
   irsym::Json curve_list = irsym::Json::array();
   for(const IRS::Irsa_curve& c : curves)
@@ -609,7 +670,7 @@ int main(int argc, char** argv)
     irsym::Json params = irsym::Json::object();
     params.add("mesh", opt.mesh_path).add("shape", opt.shape)
           .add("samples", opt.samples ? double(*opt.samples) : std::numeric_limits<double>::quiet_NaN())
-          .add("seed", opt.seed).add("geodesics", opt.geodesics).add("threads", threads)
+          .add("seed", opt.seed).add("tries", opt.tries).add("geodesics", opt.geodesics).add("threads", threads)
           .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh).add("up", opt.up)
           .add("repair", opt.repair).add("nested_symmetries", opt.nested).add("time_limit", opt.time_limit)
           .add("max_voting_pairs", opt.max_voting_pairs > 0 ? double(opt.max_voting_pairs)

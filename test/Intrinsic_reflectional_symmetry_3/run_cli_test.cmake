@@ -208,6 +208,38 @@ if(similar LESS_EQUAL 40 OR NOT voting EQUAL 40 OR NOT cap EQUAL 40)
   message(FATAL_ERROR "--max-voting-pairs 40: ${voting} voting pairs of ${similar} similar, reported cap '${cap}'")
 endif()
 
+# 2c. --tries: at 300 samples the two snowmen's map with seed 0 holds the small
+# snowman in place (fixed_point_share about 0.48); the map with seed 1 holds
+# nothing in place (about 0; it mirrors each snowman across the plane through
+# its axis perpendicular to the tube, another symmetry of a body of revolution
+# away from the tube). The tool runs seed 1 after seed 0, stops there and keeps
+# it, and its outputs are those of a run with --seed 1 alone
+run(0 --shape two_snowmen --samples 300 --tries 3 --threads 2 --out ${WORK_DIR}/tries)
+file(READ ${WORK_DIR}/tries/report.json tries_report)
+string(JSON ntries ERROR_VARIABLE jerr LENGTH "${tries_report}" results tries)
+string(JSON first_seed ERROR_VARIABLE jerr1 GET "${tries_report}" results tries 0 seed)
+string(JSON first_share ERROR_VARIABLE jerr2 GET "${tries_report}" results tries 0 fixed_point_share)
+string(JSON second_share ERROR_VARIABLE jerr3 GET "${tries_report}" results tries 1 fixed_point_share)
+string(JSON kept_seed ERROR_VARIABLE jerr4 GET "${tries_report}" results seed_kept)
+string(JSON kept_share ERROR_VARIABLE jerr5 GET "${tries_report}" results fixed_point_share)
+string(JSON suspect ERROR_VARIABLE jerr6 GET "${tries_report}" results map_suspect)
+if(jerr OR jerr1 OR jerr2 OR jerr3 OR jerr4 OR jerr5 OR jerr6 OR NOT ntries EQUAL 2 OR NOT first_seed EQUAL 0
+   OR first_share LESS_EQUAL 0.1 OR second_share GREATER 0.1 OR NOT kept_seed EQUAL 1
+   OR NOT kept_share STREQUAL second_share OR NOT suspect STREQUAL "OFF")
+  message(FATAL_ERROR "--tries 3 on the two snowmen at 300 samples: ${ntries} runs, first seed '${first_seed}' "
+                      "with share ${first_share}, then ${second_share}; kept seed '${kept_seed}' with share "
+                      "${kept_share}, map_suspect '${suspect}'; expected 2 runs, seed 0 above 0.1, seed 1 at most "
+                      "0.1 and kept, not suspect ${jerr}${jerr1}${jerr2}${jerr3}${jerr4}${jerr5}${jerr6}")
+endif()
+run(0 --shape two_snowmen --samples 300 --seed 1 --tries 1 --threads 2 --out ${WORK_DIR}/seed1)
+foreach(f symmetric_map.txt curves.txt regions.txt samples.txt)
+  file(READ ${WORK_DIR}/tries/${f} a)
+  file(READ ${WORK_DIR}/seed1/${f} b)
+  if(NOT a STREQUAL b)
+    message(FATAL_ERROR "--tries kept seed 1, but its ${f} differs from that of a run with --seed 1")
+  endif()
+endforeach()
+
 # 3. bad input: exit 2 and a message naming the problem
 file(WRITE ${WORK_DIR}/quad.off "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
 run(2 ${WORK_DIR}/quad.off --out ${WORK_DIR}/bad)
@@ -236,5 +268,8 @@ run(1 --shape snowman --out ${WORK_DIR}/x --time-limit soon)
 run(1 --shape snowman --out ${WORK_DIR}/x --geodesics magic)
 run(1 --shape snowman --out ${WORK_DIR}/x --samples many)
 run(1 --shape snowman --out ${WORK_DIR}/x --max-voting-pairs 0)
+run(1 --shape snowman --out ${WORK_DIR}/x --tries 0)
+run(1 --shape snowman --out ${WORK_DIR}/x --tries 101)
+run(1 --shape snowman --out ${WORK_DIR}/x --seed 99999999999)
 run(0 --help)
 message(STATUS "irsym end-to-end test passed")

@@ -419,8 +419,8 @@ std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance
 /// it likely held in place), and another seed of the samples worth trying.
 /// It lies in the gap measured at seed 0 between 5.7 % (the generated two
 /// snowmen, whose map is right) and 11.4 % (the least of the SCAPE maps that
-/// hold a limb in place); over the seeds 0 to 2, the maps at least 90 % right
-/// stay at or below 2.0 % on FAUST and SCAPE.
+/// hold a limb in place); the maps at least 90 % right stay at or below 1.3 %
+/// on SCAPE over the seeds 0 to 5 and 2.0 % on FAUST over the seeds 0 to 2.
 constexpr double suspect_fixed_point_share = 0.1;
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref

@@ -189,16 +189,16 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
 {
   Pipeline_result kept;
   double total_seconds = 0.;
-  int t = 0;
-  for(; t < o.tries; ++t) {
+  int runs = 0;
+  while(runs < o.tries) {
     Options run = o;
-    run.seed = o.seed + unsigned(t);
+    run.seed = o.seed + unsigned(runs++);
     Pipeline_result r = run_pipeline_once(m, run);
     total_seconds += r.seconds[5];
-    if(t == 0 || r.fixed_share < kept.fixed_share) kept = std::move(r);
-    if(kept.fixed_share <= IRS::suspect_fixed_point_share) { ++t; break; }
+    if(runs == 1 || r.fixed_share < kept.fixed_share) kept = std::move(r);
+    if(kept.fixed_share <= IRS::suspect_fixed_point_share) break;
   }
-  kept.runs = t;
+  kept.runs = runs;
   kept.seconds[5] = total_seconds;
   return kept;
 }
@@ -623,7 +623,7 @@ int main(int argc, char** argv)
         o.seeds.push_back(unsigned(std::strtoul(item.c_str(), nullptr, 10)));
       if(o.seeds.empty()) { std::cerr << "--seeds expects a list such as 0,1,2\n"; return 1; }
     }
-    else if(a == "--tries") o.tries = std::max(1, std::atoi(value().c_str()));
+    else if(a == "--tries") o.tries = std::clamp(std::atoi(value().c_str()), 1, 100);
     else if(a == "--write") o.write = value();
     else if(a == "--threads") o.threads = std::atoi(value().c_str());
     else if(a == "--no-scape") o.scape = false;

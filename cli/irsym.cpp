@@ -55,7 +55,8 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace {
 
 // What one seed of the samples gives, from the samples to the symmetric map;
-// --tries keeps the run whose map has the lowest fixed_point_share()
+// --tries keeps the first run whose map is not suspect, or else the one of
+// least symmetric_map_defect()
 struct Seed_run
 {
   unsigned seed = 0;
@@ -67,7 +68,9 @@ struct Seed_run
   std::vector<IRS::Irsa_curve> curves;
   std::vector<long> region, partner;
   std::size_t region_faces = 0, mapped_vertices = 0;
-  double fixed_share = 0.;
+  double fixed_share = 0., distortion = 0.;
+  bool suspect() const { return IRS::is_suspect_symmetric_map(fixed_share, distortion); }
+  double defect() const { return IRS::symmetric_map_defect(fixed_share, distortion); }
 };
 
 const char* usage_text =
@@ -86,9 +89,10 @@ usage: irsym MESH --out DIR [options]
   --seed S             random seed (default: 0); same seed, same result
   --tries N            where the symmetric map is suspect (results.map_suspect below), run
                        again from the samples on with seeds S+1, S+2, ..., at most N runs in
-                       all, and keep the run whose map has the lowest fixed_point_share
-                       (default: 3; 1 runs seed S alone). Measured: no second run on
-                       FAUST's 19 humans, 1.2-1.6 runs per mesh on SCAPE's 18
+                       all; keep the first map that is not suspect, or else the one of least
+                       isometric_distortion + 0.1 fixed_point_share (default: 3; 1 runs
+                       seed S alone). Measured: no second run on FAUST's 19 humans, 1.9
+                       runs per mesh on SCAPE's 18
   --geodesics G        geodesic oracle: heat (default), exact or dijkstra
   --threads T          worker threads (default: all cores); results do not depend on it
   --target-vertices N  first remesh or decimate to about N vertices (default: keep the mesh)
@@ -114,8 +118,10 @@ usage: irsym MESH --out DIR [options]
 outputs in DIR:
   report.json          input statistics, parameters, time and peak memory per stage;
                        results.map_suspect when the map keeps more than 10 % of the
-                       vertices far from the curves in place (fixed_point_share);
-                       results.tries: seed and fixed_point_share of each run, and
+                       vertices far from the curves in place (fixed_point_share) or
+                       changes the distances between landmarks by more than 0.04
+                       sqrt(area) on average (isometric_distortion); results.tries: seed,
+                       fixed_point_share and isometric_distortion of each run, and
                        results.seed_kept: the seed whose run all outputs come from
   samples.txt          the samples, as input vertex ids (one per line)
   tau.txt              the IRSA transform, one value per input vertex (input order)
@@ -453,13 +459,16 @@ Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, co
   r.region_faces = IRS::symmetric_regions(
     work, r.D, r.curves, boost::make_iterator_property_map(r.region.begin(), get(boost::face_index, work)),
     IRS::parameters::callback(within_limit));
+  std::vector<long> map_region(num_vertices(work), -1);
+  const auto partner_map = boost::make_iterator_property_map(r.partner.begin(), get(boost::vertex_index, work));
+  const auto map_region_map = boost::make_iterator_property_map(map_region.begin(), get(boost::vertex_index, work));
   r.mapped_vertices = IRS::symmetric_vertex_map(
-    work, r.D, r.curves, boost::make_iterator_property_map(r.partner.begin(), get(boost::vertex_index, work)),
-    IRS::parameters::callback(within_limit));
-  // a reflection fixes its axis alone: a map that keeps parts far from the
-  // curves in place (a limb onto itself) is suspect (fixed_point_share())
-  r.fixed_share = IRS::fixed_point_share(
-    work, r.curves, boost::make_iterator_property_map(r.partner.begin(), get(boost::vertex_index, work)));
+    work, r.D, r.curves, partner_map, IRS::parameters::callback(within_limit).vertex_region_map(map_region_map));
+  // a reflection fixes its axis alone and preserves distances: a map that
+  // keeps parts far from the curves in place (a limb onto itself) or sends a
+  // part by another symmetry is suspect
+  r.fixed_share = IRS::fixed_point_share(work, r.curves, partner_map);
+  r.distortion = IRS::isometric_distortion(work, partner_map, IRS::parameters::vertex_region_map(map_region_map));
   log.stop();
   return r;
 }
@@ -519,26 +528,30 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   const std::vector<double> areas = IRS::vertex_areas(work);
   log.stop();
 
-  // --tries: another seed where the map is suspect (it holds parts far from
-  // the curves in place); the map with the lowest fixed_point_share() is kept
+  // --tries: another seed while the map is suspect (it holds parts far from
+  // the curves in place, or does not preserve distances); the first map that
+  // is not suspect is kept, or else the one of least defect
   Seed_run kept;
   irsym::Json tries = irsym::Json::array();
   for(int t = 0; t < opt.tries; ++t) {
     Seed_run run = run_seed(opt, work, oracle, vertex_sdf, areas, opt.seed + unsigned(t), within_limit, log);
     tries.push(irsym::Json::object().add("seed", run.seed).add("curves", run.curves.size())
-                 .add("fixed_point_share", run.fixed_share));
-    if(run.fixed_share > IRS::suspect_fixed_point_share && t + 1 < opt.tries)
-      std::cerr << "[irsym] the symmetric map of seed " << run.seed << " keeps " << 100. * run.fixed_share
-                << " % of the vertices far from the curves in place: trying seed " << run.seed + 1u << '\n';
-    if(t == 0 || run.fixed_share < kept.fixed_share) kept = std::move(run);
-    if(kept.fixed_share <= IRS::suspect_fixed_point_share) break;
+                 .add("fixed_point_share", run.fixed_share).add("isometric_distortion", run.distortion));
+    const bool suspect = run.suspect();
+    if(suspect && t + 1 < opt.tries)
+      std::cerr << "[irsym] the symmetric map of seed " << run.seed << " is suspect (" << 100. * run.fixed_share
+                << " % of the vertices far from the curves kept in place, isometric distortion " << run.distortion
+                << "): trying seed " << run.seed + 1u << '\n';
+    if(t == 0 || !suspect || run.defect() < kept.defect()) kept = std::move(run);
+    if(!suspect) break;
   }
-  const bool map_suspect = kept.fixed_share > IRS::suspect_fixed_point_share;
+  const bool map_suspect = kept.suspect();
   if(map_suspect)
     std::cerr << "irsym: warning: the symmetric map keeps " << 100. * kept.fixed_share
-              << " % of the vertices far from the curves in place, where a reflection moves every point off its "
-                 "axis: parts of the map are likely wrong (a limb mapped onto itself); more --tries or another "
-                 "--seed may do better\n";
+              << " % of the vertices far from the curves in place and changes the distances between landmarks by "
+              << kept.distortion << " sqrt(area) on average, where a reflection moves every point off its axis "
+                 "and preserves distances: parts of the map are likely wrong (a limb mapped onto itself or by "
+                 "another symmetry); more --tries or another --seed may do better\n";
   const std::vector<std::size_t>& samples = kept.samples;
   const IRS::Geodesic_distance_matrix& D = kept.D;
   const IRS::Irsa_voting_result& voting = kept.voting;
@@ -619,6 +632,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
      .add("faces_in_regions", kept.region_faces)
      .add("vertices_with_partner", kept.mapped_vertices)
      .add("fixed_point_share", kept.fixed_share)
+     .add("isometric_distortion", kept.distortion)
      .add("map_suspect", map_suspect)
      .add("seed_kept", kept.seed)
      .add("tries", tries)

@@ -21,7 +21,9 @@
 // the map degenerating to the identity there) rather than a misplaced mirror
 // image. fixed% needs no ground truth: the package's fixed_point_share() of
 // the map (the share of the vertices far from the curves whose partner lies
-// near themselves, in %; a reflection fixes its axis alone).
+// near themselves, in %; a reflection fixes its axis alone); dist, the
+// package's isometric_distortion() of the map (mean change of the distances
+// between landmarks, over sqrt(area)), needs none either.
 //
 // Where the ground truth itself is not an isometry. FAUST's mirror pairs come
 // from a registered template, and a pose stretches skin unevenly, so a
@@ -54,8 +56,9 @@
 //             per seed and on average, FAUST's mean CR by group, and the posed
 //             shapes against their own subject's rest pose (tr_reg_000)
 //   N (tries) as irsym --tries (default 1): where the map is suspect
-//             (fixed% above 10), run again with seeds S+1, S+2, ..., at most N
-//             runs, and keep the map with the lowest fixed%; columns seed (of
+//             (fixed% above 10 or dist above 0.03), run again with seeds S+1,
+//             S+2, ..., at most N runs, and keep the first map that is not
+//             suspect, or else the one of least dist + 0.1 fixed share; columns seed (of
 //             the run kept) and runs; total s sums the runs, the other times
 //             are those of the run kept
 //   DIR       write NAME.map (partner per vertex, -1 for none) and
@@ -130,6 +133,7 @@ struct Pipeline_result
   std::vector<std::ptrdiff_t> partner_without_spectral; // number_of_eigenfunctions(0)
   std::size_t similar_pairs = 0, voting_pairs = 0, region_faces = 0;
   double fixed_share = 0.; // fixed_point_share() of the map, not timed
+  double distortion = 0.;  // isometric_distortion() of the map, not timed
   unsigned seed = 0; // of the run kept
   int runs = 1;      // runs made with --tries; the times are those of the run kept, but total s sums all runs
   double seconds[6] = {0., 0., 0., 0., 0., 0.}; // geodesics, signatures, voting, curves, map, total
@@ -172,7 +176,8 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   r.seconds[3] = t.time(); t.reset();
 
   auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
-  IRS::symmetric_vertex_map(m, D, r.curves, partner);
+  auto map_region = get(CGAL::dynamic_vertex_property_t<int>(), m);
+  IRS::symmetric_vertex_map(m, D, r.curves, partner, IRS::parameters::vertex_region_map(map_region));
   auto region = get(CGAL::dynamic_face_property_t<int>(), m);
   r.region_faces = IRS::symmetric_regions(m, D, r.curves, region);
   r.partner.assign(num_vertices(m), -1);
@@ -180,12 +185,14 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   r.seconds[4] = t.time();
   r.seconds[5] = total.time();
   r.fixed_share = IRS::fixed_point_share(m, r.curves, partner);
+  r.distortion = IRS::isometric_distortion(m, partner, IRS::parameters::vertex_region_map(map_region));
   r.seed = o.seed;
   return r;
 }
 
-// as irsym --tries: another seed while the map is suspect (fixed_point_share()
-// above suspect_fixed_point_share), keeping the map with the lowest share
+// as irsym --tries: another seed while the map is suspect
+// (is_suspect_symmetric_map()); the first map that is not, or else the one of
+// least symmetric_map_defect(), is kept
 Pipeline_result run_pipeline(const Mesh& m, const Options& o)
 {
   CGAL::Real_timer t;
@@ -200,8 +207,11 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
     run.seed = o.seed + unsigned(runs++);
     Pipeline_result r = run_pipeline_once(m, run, vertex_sdf, vertex_areas);
     total_seconds += r.seconds[5];
-    if(runs == 1 || r.fixed_share < kept.fixed_share) kept = std::move(r);
-    if(kept.fixed_share <= IRS::suspect_fixed_point_share) break;
+    const bool suspect = IRS::is_suspect_symmetric_map(r.fixed_share, r.distortion);
+    if(runs == 1 || !suspect ||
+       IRS::symmetric_map_defect(r.fixed_share, r.distortion) < IRS::symmetric_map_defect(kept.fixed_share, kept.distortion))
+      kept = std::move(r);
+    if(!suspect) break;
   }
   kept.runs = runs;
   kept.seconds[1] += sdf_seconds;
@@ -391,7 +401,7 @@ void print_header()
             << std::setw(9) << "mean e" << std::setw(10) << "axis mean" << std::setw(9) << "axis max"
             << std::setw(8) << "geod s" << std::setw(7) << "sig s" << std::setw(8) << "vote s" << std::setw(8)
             << "curve s" << std::setw(7) << "map s" << std::setw(8) << "total s" << std::setw(8) << "own%" << std::setw(7) << "iso%" << std::setw(8) << "CRiso%"
-            << std::setw(11) << "fail>iso%" << std::setw(10) << "contact%" << std::setw(8) << "fixed%" << std::setw(6) << "seed"
+            << std::setw(11) << "fail>iso%" << std::setw(10) << "contact%" << std::setw(8) << "fixed%" << std::setw(7) << "dist" << std::setw(6) << "seed"
             << std::setw(6) << "runs" << '\n';
 }
 
@@ -406,7 +416,7 @@ void print_row(const std::string& name, const Mesh& m, std::size_t samples, cons
             << r.seconds[5] << std::setprecision(1) << std::setw(8) << e.own_side() << std::setw(7) << e.isometric_share()
             << std::setprecision(2) << std::setw(8) << e.cr_isometric() << std::setprecision(1) << std::setw(11)
             << e.failed_more_isometric() << std::setw(10) << e.at_contact() << std::setw(8) << 100. * r.fixed_share
-            << std::setw(6) << r.seed << std::setw(6) << r.runs << std::endl;
+            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << r.seed << std::setw(6) << r.runs << std::endl;
 }
 
 struct Summary

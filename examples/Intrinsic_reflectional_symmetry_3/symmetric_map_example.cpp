@@ -65,7 +65,10 @@ int main(int argc, char** argv)
   auto region = mesh.add_property_map<face_descriptor, int>("f:region", -1).first;
   auto partner = mesh.add_property_map<vertex_descriptor, long>("v:partner", -1).first;
   const std::size_t in_regions = IRS::symmetric_regions(mesh, D, curves, region);
-  const std::size_t mapped = IRS::symmetric_vertex_map(mesh, D, curves, partner);
+  // map_region: which curve's reflection gives each vertex its partner
+  auto map_region = mesh.add_property_map<vertex_descriptor, int>("v:map_region", -1).first;
+  const std::size_t mapped =
+    IRS::symmetric_vertex_map(mesh, D, curves, partner, IRS::parameters::vertex_region_map(map_region));
 
   std::cout << num_vertices(mesh) << " vertices, " << samples.size() << " samples, " << similar.size()
             << " similar pairs, " << curves.size() << " IRSA curve(s)" << std::endl;
@@ -79,12 +82,17 @@ int main(int argc, char** argv)
     std::cout << "  vertex " << std::size_t(v) << " <-> " << get(partner, v) << std::endl;
   }
 
-  // 5. a check that needs no ground truth: a reflection fixes its axis alone,
-  // so a map that holds parts far from the curves in place (a limb onto
-  // itself) is suspect; irsym --tries then runs again with the next seeds
+  // 5. checks that need no ground truth: a reflection fixes its axis alone
+  // and preserves distances, so a map that holds parts far from the curves in
+  // place (a limb onto itself) or sends a part by another symmetry is
+  // suspect; irsym --tries then runs again with the next seeds
   const double fixed = IRS::fixed_point_share(mesh, curves, partner);
-  std::cout << 100. * fixed << " % of the vertices far from the curves are (nearly) their own partner"
-            << (fixed > IRS::suspect_fixed_point_share ? ": the map is suspect, another random_seed may do better" : "")
+  const double distortion =
+    IRS::isometric_distortion(mesh, partner, IRS::parameters::vertex_region_map(map_region));
+  std::cout << 100. * fixed << " % of the vertices far from the curves are (nearly) their own partner; the map "
+            << "changes the distances between landmarks by " << distortion << " sqrt(area) on average"
+            << (IRS::is_suspect_symmetric_map(fixed, distortion)
+                  ? ": the map is suspect, another random_seed may do better" : "")
             << std::endl;
   return EXIT_SUCCESS;
 }

@@ -31,12 +31,17 @@ foreach(key stages input parameters results similar_sample_pairs curves peak_mem
     message(FATAL_ERROR "report.json lacks '${key}': ${jerr}\n${report}")
   endif()
 endforeach()
-# the snowman's map is right: it holds no part in place far from the curve
+# the snowman's map is right: it holds no part in place far from the curve,
+# and preserves distances
 string(JSON fixed ERROR_VARIABLE jerr GET "${report}" results fixed_point_share)
 string(JSON suspect ERROR_VARIABLE jerr2 GET "${report}" results map_suspect)
-if(jerr OR jerr2 OR NOT suspect STREQUAL "OFF" OR fixed GREATER 0.02 OR fixed LESS 0)
-  message(FATAL_ERROR "report.json: fixed_point_share '${fixed}', map_suspect '${suspect}', expected at most 0.02 "
-                      "and false ${jerr} ${jerr2}")
+string(JSON distortion ERROR_VARIABLE jerr3 GET "${report}" results isometric_distortion)
+string(JSON tried_distortion ERROR_VARIABLE jerr4 GET "${report}" results tries 0 isometric_distortion)
+if(jerr OR jerr2 OR jerr3 OR jerr4 OR NOT suspect STREQUAL "OFF" OR fixed GREATER 0.02 OR fixed LESS 0
+   OR distortion GREATER 0.02 OR distortion LESS 0 OR NOT tried_distortion STREQUAL distortion)
+  message(FATAL_ERROR "report.json: fixed_point_share '${fixed}', isometric_distortion '${distortion}' (in tries: "
+                      "'${tried_distortion}'), map_suspect '${suspect}', expected at most 0.02, at most 0.02 "
+                      "and false ${jerr} ${jerr2} ${jerr3} ${jerr4}")
 endif()
 # every curve says whether it is nested (the run is without --nested-symmetries)
 string(JSON ncurves ERROR_VARIABLE jerr LENGTH "${report}" results curve_details)

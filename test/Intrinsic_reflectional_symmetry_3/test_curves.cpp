@@ -7,7 +7,9 @@
 // throws Input_error. The spectral refinement of the map: its nearest
 // neighbours against the literal minimum, its basis orthonormal, and a
 // wrong patch of a known mirror map mended. fixed_point_share() on a known
-// mirror map, the identity and a map with a patch held in place.
+// mirror map, the identity and a map with a patch held in place;
+// isometric_distortion() against its literal definition, and on maps that
+// send parts by different symmetries, with and without their regions.
 //
 // Similar pairs: the bent capsule and the ellipsoid run the package's whole
 // pipeline (SDF signatures and the similarity filter). The other shapes are
@@ -20,6 +22,7 @@
 // The heat-method oracle first: a header it pulls in must come before
 // shape_generators.h (include-order issue in internal/component_meshes.h).
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
@@ -32,6 +35,7 @@
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
@@ -744,6 +748,33 @@ TEST(Curves, TwoSnowmenGiveOneCurveAndOneRegionPerSnowman)
     EXPECT_LE(double(other_in), 0.02 * double(other));
     EXPECT_GE(q.share(), 0.95);
   }
+
+  // the map's own regions (vertex_region_map): the same partners; a vertex
+  // and its partner in the same region, -1 exactly where there is no partner,
+  // each curve a region; then the map preserves distances within each region
+  const std::size_t n = pts.size();
+  std::vector<std::ptrdiff_t> partner(n, -2);
+  std::vector<int> map_region(n, -2);
+  const auto vim = get(boost::vertex_index, shape.mesh);
+  const auto partner_map = boost::make_iterator_property_map(partner.begin(), vim);
+  const auto region_map = boost::make_iterator_property_map(map_region.begin(), vim);
+  IRS::symmetric_vertex_map(shape.mesh, p.D, p.curves, partner_map, IRS::parameters::vertex_region_map(region_map));
+  EXPECT_EQ(partner, p.partner);
+  std::vector<std::size_t> region_size(p.curves.size(), 0);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    ASSERT_EQ(partner[v] < 0, map_region[v] < 0) << "vertex " << v;
+    if(partner[v] < 0) { EXPECT_EQ(map_region[v], -1); continue; }
+    ASSERT_LT(std::size_t(map_region[v]), p.curves.size());
+    EXPECT_EQ(map_region[std::size_t(partner[v])], map_region[v]) << "vertex " << v;
+    ++region_size[std::size_t(map_region[v])];
+  }
+  for(std::size_t c = 0; c < 2; ++c) EXPECT_GT(region_size[c], n / 10) << "region " << c;
+  const double distortion =
+    IRS::isometric_distortion(shape.mesh, partner_map, IRS::parameters::vertex_region_map(region_map));
+  std::cout << "[ two snowmen ] isometric distortion of the map " << distortion << ", regions of "
+            << region_size[0] << " and " << region_size[1] << " vertices" << std::endl;
+  EXPECT_LT(distortion, 0.02);
 }
 
 // ---------------------------------------------------------------- spectral refinement
@@ -962,6 +993,85 @@ TEST(Curves, FixedPointShareCountsVerticesKeptInPlaceFarFromTheCurve)
   EXPECT_THROW(share(bad), IRS::Input_error);
   curves[0].polylines[0].push_back(n);
   EXPECT_THROW(share(mirror), IRS::Input_error);
+}
+
+TEST(Curves, IsometricDistortionSeesPartsMappedByAnotherSymmetry)
+{
+  // the ellipsoid's three mirror planes x=0, y=0, z=0 (its tessellation is
+  // symmetric, so each mirror map preserves the edge distances exactly)
+  const auto shape = IRS::generate_ellipsoid<Mesh>(2000);
+  const std::vector<Point> pts = vertex_points(shape.mesh);
+  ASSERT_EQ(shape.symmetries.size(), 3u);
+  const IRS::Known_symmetry& sx = shape.symmetries[0];
+  const IRS::Known_symmetry& sy = shape.symmetries[1];
+  ASSERT_EQ(sx.name, "x=0 plane");
+  ASSERT_EQ(sy.name, "y=0 plane");
+  const std::size_t n = pts.size();
+  std::vector<long> mirror(n), identity(n), mixed(n), halves(n), unmapped(n, -1);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    ASSERT_GE(sx.mirror[v], 0);
+    ASSERT_GE(sy.mirror[v], 0);
+    mirror[v] = long(sx.mirror[v]);
+    identity[v] = long(v);
+    // the half z > 0 by the plane x=0, the other half by the plane y=0
+    mixed[v] = pts[v].z() > 0. ? long(sx.mirror[v]) : long(sy.mirror[v]);
+    halves[v] = pts[v].z() > 0. ? 0 : 1;
+  }
+  const auto vim = get(boost::vertex_index, shape.mesh);
+  auto distortion = [&](std::vector<long>& map) {
+    return IRS::isometric_distortion(shape.mesh, boost::make_iterator_property_map(map.begin(), vim));
+  };
+  const double of_mirror = distortion(mirror), of_identity = distortion(identity), of_mixed = distortion(mixed);
+  const double of_mixed_by_halves = IRS::isometric_distortion(
+    shape.mesh, boost::make_iterator_property_map(mixed.begin(), vim),
+    IRS::parameters::vertex_region_map(boost::make_iterator_property_map(halves.begin(), vim)));
+  std::cout << "[ isometric distortion ] ellipsoid: mirror x=0 " << of_mirror << ", identity " << of_identity
+            << ", half by x=0 and half by y=0 " << of_mixed << " (each half its own region: " << of_mixed_by_halves
+            << ")" << std::endl;
+  EXPECT_LT(of_mirror, 1e-9);
+  EXPECT_EQ(of_identity, 0.);                             // the identity preserves distances: fixed_point_share()'s case
+  EXPECT_GT(of_mixed, IRS::suspect_isometric_distortion); // two symmetries in one region
+  EXPECT_LT(of_mixed_by_halves, 1e-9);                    // each in its own
+  EXPECT_EQ(distortion(unmapped), 0.);
+  EXPECT_TRUE(IRS::is_suspect_symmetric_map(0., of_mixed));
+  EXPECT_FALSE(IRS::is_suspect_symmetric_map(0., of_mirror));
+  EXPECT_TRUE(IRS::is_suspect_symmetric_map(1., of_identity));
+  EXPECT_LT(IRS::symmetric_map_defect(0., of_mirror), IRS::symmetric_map_defect(1., of_identity));
+
+  // the literal definition where every vertex with a partner is a landmark
+  // (fewer than 150 of them): the mean over all their pairs, distances by
+  // Boost's Dijkstra (Dijkstra_geodesic_oracle)
+  std::vector<long> partial(n, -1);
+  std::vector<std::size_t> mapped;
+  for(std::size_t v = 0; v < n && mapped.size() < 120; v += 13)
+  {
+    partial[v] = mixed[v];
+    mapped.push_back(v);
+  }
+  const IRS::Dijkstra_geodesic_oracle<Mesh> dijkstra(shape.mesh);
+  std::vector<float> from_x(n), from_image(n);
+  double sum = 0.;
+  std::size_t pairs = 0;
+  for(std::size_t i = 0; i < mapped.size(); ++i)
+  {
+    dijkstra.distances_from(mapped[i], from_x.data());
+    dijkstra.distances_from(std::size_t(partial[mapped[i]]), from_image.data());
+    for(std::size_t j = i + 1; j < mapped.size(); ++j, ++pairs)
+      sum += std::abs(double(from_x[mapped[j]]) - double(from_image[std::size_t(partial[mapped[j]])]));
+  }
+  double area = 0.;
+  for(auto f : faces(shape.mesh)) area += CGAL::Polygon_mesh_processing::face_area(f, shape.mesh);
+  const double literal = sum / double(pairs) / std::sqrt(area);
+  EXPECT_NEAR(distortion(partial), literal, 1e-5 * literal);
+  EXPECT_GT(literal, 0.);
+
+  // bad input: a partner that is no vertex
+  std::vector<long> bad = mirror;
+  bad[7] = long(n);
+  EXPECT_THROW(distortion(bad), IRS::Input_error);
+  bad[7] = -2;
+  EXPECT_THROW(distortion(bad), IRS::Input_error);
 }
 
 TEST(Curves, SpectralRefinementWithSidesMendsHandsMappedToThemselves)

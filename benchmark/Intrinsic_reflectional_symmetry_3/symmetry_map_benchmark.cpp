@@ -56,7 +56,7 @@
 //             per seed and on average, FAUST's mean CR by group, and the posed
 //             shapes against their own subject's rest pose (tr_reg_000)
 //   N (tries) as irsym --tries (default 1): where the map is suspect
-//             (fixed% above 10 or dist above 0.03), run again with seeds S+1,
+//             (fixed% above 10 or dist above 0.04), run again with seeds S+1,
 //             S+2, ..., at most N runs, and keep the first map that is not
 //             suspect, or else the one of least dist + 0.1 fixed share; columns seed (of
 //             the run kept) and runs; total s sums the runs, the other times

@@ -58,7 +58,7 @@
 //   N (tries) as irsym --tries (default 1): where the map is suspect
 //             (fixed% above 10 or dist above 0.04), run again with seeds S+1,
 //             S+2, ..., at most N runs, and keep the first map that is not
-//             suspect, or else the one of least dist + 0.1 fixed share; columns seed (of
+//             suspect, or else the one of least dist + 0.3 fixed share; columns seed (of
 //             the run kept) and runs; total s sums the runs, the other times
 //             are those of the run kept
 //   DIR       write NAME.map (partner per vertex, -1 for none) and

@@ -70,7 +70,6 @@ struct Seed_run
   std::size_t region_faces = 0, mapped_vertices = 0;
   double fixed_share = 0., distortion = 0.;
   bool suspect() const { return IRS::is_suspect_symmetric_map(fixed_share, distortion); }
-  double defect() const { return IRS::symmetric_map_defect(fixed_share, distortion); }
 };
 
 const char* usage_text =
@@ -112,7 +111,9 @@ usage: irsym MESH --out DIR [options]
                        (default) or -Z
   --time-limit S       stop S seconds after the mesh is read (exit status 4), checked during
                        the geodesic matrix, the voting, the curves and the map (the library's
-                       callback); the other stages run to their end
+                       callback); the other stages run to their end. Reached during a second
+                       or later --tries run, it keeps the best complete run and goes on (a
+                       warning in report.json; results.tries marks the run "stopped")
   --help               this text
 
 outputs in DIR:
@@ -507,7 +508,6 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     std::cerr << "irsym: warning: " << os.str() << '\n';
     warnings.push(os.str());
   }
-  report.add("warnings", warnings);
 
   log.start("prepare");
   // without --remesh, prepare_mesh() decimates to a lower target and remeshes to a higher one
@@ -531,20 +531,33 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   // --tries: another seed while the map is suspect (it holds parts far from
   // the curves in place, or does not preserve distances); the first map that
   // is not suspect is kept, or else the one of least defect
-  Seed_run kept;
+  // (internal::best_of_tries(): the package's retry rule). A time limit
+  // reached during a later try keeps the best earlier run, with a warning.
   irsym::Json tries = irsym::Json::array();
-  for(int t = 0; t < opt.tries; ++t) {
-    Seed_run run = run_seed(opt, work, oracle, vertex_sdf, areas, opt.seed + unsigned(t), within_limit, log);
-    tries.push(irsym::Json::object().add("seed", run.seed).add("curves", run.curves.size())
-                 .add("fixed_point_share", run.fixed_share).add("isometric_distortion", run.distortion));
-    const bool suspect = run.suspect();
-    if(suspect && t + 1 < opt.tries)
-      std::cerr << "[irsym] the symmetric map of seed " << run.seed << " is suspect (" << 100. * run.fixed_share
-                << " % of the vertices far from the curves kept in place, isometric distortion " << run.distortion
-                << "): trying seed " << run.seed + 1u << '\n';
-    if(t == 0 || !suspect || run.defect() < kept.defect()) kept = std::move(run);
-    if(!suspect) break;
+  auto outcome = IRS::internal::best_of_tries<Seed_run>(
+    [&](unsigned seed) {
+      Seed_run run = run_seed(opt, work, oracle, vertex_sdf, areas, seed, within_limit, log);
+      tries.push(irsym::Json::object().add("seed", run.seed).add("curves", run.curves.size())
+                   .add("fixed_point_share", run.fixed_share).add("isometric_distortion", run.distortion));
+      if(run.suspect() && seed + 1u < opt.seed + unsigned(opt.tries))
+        std::cerr << "[irsym] the symmetric map of seed " << seed << " is suspect (" << 100. * run.fixed_share
+                  << " % of the vertices far from the curves kept in place, isometric distortion " << run.distortion
+                  << "): trying seed " << seed + 1u << '\n';
+      return run;
+    },
+    opt.seed, opt.tries);
+  if(outcome.stopped) {
+    log.abandon();
+    std::ostringstream os;
+    os << "the time limit of " << opt.time_limit << " s was reached during the run of seed "
+       << opt.seed + unsigned(outcome.runs) << " (" << outcome.stop_message << "); the outputs come from seed "
+       << outcome.kept.seed << ", the best of the " << outcome.runs << " complete run(s)";
+    std::cerr << "irsym: warning: " << os.str() << '\n';
+    warnings.push(os.str());
+    tries.push(irsym::Json::object().add("seed", opt.seed + unsigned(outcome.runs)).add("stopped", true));
   }
+  Seed_run kept = std::move(outcome.kept);
+  report.add("warnings", warnings);
   const bool map_suspect = kept.suspect();
   if(map_suspect)
     std::cerr << "irsym: warning: the symmetric map keeps " << 100. * kept.fixed_share

@@ -118,6 +118,12 @@ public:
     std::fprintf(stderr, "[irsym] %s: %.3f s, peak %.0f MiB\n", name_.c_str(), timer_.time(),
                  stages_.back().peak_mib);
   }
+  /// ends the current stage, cut short by a cancellation: recorded as "(stopped)"
+  void abandon()
+  {
+    name_ += " (stopped)";
+    stop();
+  }
   Json to_json() const
   {
     Json a = Json::array();

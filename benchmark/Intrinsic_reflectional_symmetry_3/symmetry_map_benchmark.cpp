@@ -190,30 +190,27 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   return r;
 }
 
-// as irsym --tries: another seed while the map is suspect
-// (is_suspect_symmetric_map()); the first map that is not, or else the one of
-// least symmetric_map_defect(), is kept
+// as irsym --tries (the package's retry rule, internal::best_of_tries()):
+// another seed while the map is suspect; the first map that is not, or else
+// the one of least symmetric_map_defect(), is kept
 Pipeline_result run_pipeline(const Mesh& m, const Options& o)
 {
   CGAL::Real_timer t;
   t.start();
   const std::vector<double> vertex_sdf = IRS::vertex_sdf_values(m), vertex_areas = IRS::vertex_areas(m);
   const double sdf_seconds = t.time(); // counted with the signatures (sig s) and in total s
-  Pipeline_result kept;
   double total_seconds = sdf_seconds;
-  int runs = 0;
-  while(runs < o.tries) {
-    Options run = o;
-    run.seed = o.seed + unsigned(runs++);
-    Pipeline_result r = run_pipeline_once(m, run, vertex_sdf, vertex_areas);
-    total_seconds += r.seconds[5];
-    const bool suspect = IRS::is_suspect_symmetric_map(r.fixed_share, r.distortion);
-    if(runs == 1 || !suspect ||
-       IRS::symmetric_map_defect(r.fixed_share, r.distortion) < IRS::symmetric_map_defect(kept.fixed_share, kept.distortion))
-      kept = std::move(r);
-    if(!suspect) break;
-  }
-  kept.runs = runs;
+  auto outcome = IRS::internal::best_of_tries<Pipeline_result>(
+    [&](unsigned seed) {
+      Options run = o;
+      run.seed = seed;
+      Pipeline_result r = run_pipeline_once(m, run, vertex_sdf, vertex_areas);
+      total_seconds += r.seconds[5];
+      return r;
+    },
+    o.seed, o.tries);
+  Pipeline_result kept = std::move(outcome.kept);
+  kept.runs = outcome.runs;
   kept.seconds[1] += sdf_seconds;
   kept.seconds[5] = total_seconds;
 

@@ -1074,6 +1074,51 @@ TEST(Curves, IsometricDistortionSeesPartsMappedByAnotherSymmetry)
   EXPECT_THROW(distortion(bad), IRS::Input_error);
 }
 
+TEST(Curves, BestOfTriesKeepsTheFirstGoodMapOrTheLeastDefect)
+{
+  // the retry rule of irsym --tries and symmetry_map_benchmark --tries, on
+  // made-up runs: (fixed-point share, distortion) by seed
+  struct Run { unsigned seed = 0; double fixed_share = 0., distortion = 0.; };
+  const std::vector<Run> by_seed = {{0, 0.48, 0.01}, {1, 0.05, 0.06}, {2, 0.20, 0.02}, {3, 0.02, 0.01}};
+  std::vector<unsigned> asked;
+  auto run = [&](unsigned seed) { asked.push_back(seed); return by_seed.at(seed); };
+  // seed 3 is not suspect: the loop stops there
+  auto all = IRS::internal::best_of_tries<Run>(run, 0u, 10);
+  EXPECT_EQ(all.kept.seed, 3u);
+  EXPECT_EQ(all.runs, 4);
+  EXPECT_FALSE(all.stopped);
+  EXPECT_EQ(asked, (std::vector<unsigned>{0, 1, 2, 3}));
+  // three suspect runs: the least distortion + 0.3 share, seed 1 (0.075;
+  // seed 2: 0.08, seed 0: 0.154), although seed 2 has the lower distortion
+  auto three = IRS::internal::best_of_tries<Run>(run, 0u, 3);
+  EXPECT_EQ(three.kept.seed, 1u);
+  EXPECT_EQ(three.runs, 3);
+  // a map that is not suspect at once: one run
+  asked.clear();
+  auto one = IRS::internal::best_of_tries<Run>(run, 3u, 3);
+  EXPECT_EQ(one.kept.seed, 3u);
+  EXPECT_EQ(one.runs, 1);
+  EXPECT_EQ(asked, (std::vector<unsigned>{3}));
+
+  // a run cancelled (a time limit) after complete runs: the best of those is
+  // kept and the cancellation reported; a cancelled first run propagates, as
+  // does any other error
+  auto cancel_at = [&](unsigned stop) {
+    return [&, stop](unsigned seed) {
+      if(seed == stop) throw IRS::Operation_cancelled("compute_irsa_transform");
+      return by_seed.at(seed);
+    };
+  };
+  auto stopped = IRS::internal::best_of_tries<Run>(cancel_at(2), 0u, 3);
+  EXPECT_TRUE(stopped.stopped);
+  EXPECT_EQ(stopped.runs, 2);
+  EXPECT_EQ(stopped.kept.seed, 1u);
+  EXPECT_NE(stopped.stop_message.find("compute_irsa_transform"), std::string::npos);
+  EXPECT_THROW(IRS::internal::best_of_tries<Run>(cancel_at(0), 0u, 3), IRS::Operation_cancelled);
+  EXPECT_THROW(IRS::internal::best_of_tries<Run>([](unsigned) -> Run { throw std::runtime_error("no memory"); }, 0u, 3),
+               std::runtime_error);
+}
+
 TEST(Curves, SpectralRefinementWithSidesMendsHandsMappedToThemselves)
 {
   // the mirror map of the stick figure with the outer half of both arms

@@ -582,6 +582,57 @@ inline double symmetric_map_defect(double share, double distortion)
   return distortion + 0.3 * share;
 }
 
+namespace internal {
+
+/// What `best_of_tries()` keeps.
+template <class Run>
+struct Tries_outcome
+{
+  Run kept;
+  int runs = 0;            // runs completed
+  bool stopped = false;    // a later run was cancelled (its callback said stop)
+  std::string stop_message; // what() of that Operation_cancelled
+};
+
+/// The retry rule of `irsym --tries` and `symmetry_map_benchmark --tries`:
+/// `run(seed)` for `first_seed`, `first_seed + 1`, ..., at most `tries`
+/// runs, until a map is not suspect (`is_suspect_symmetric_map()`); that map
+/// is kept, or else the one of least `symmetric_map_defect()` (the earlier one
+/// on a tie). `Run` has the members `fixed_share` and `distortion`. A run
+/// cancelled by its callback (`Operation_cancelled`, a time limit) after an
+/// earlier run completed ends the loop with the best completed run
+/// (`stopped`): the time spent is not wasted. A cancelled first run, and any
+/// other exception, propagate.
+template <class Run, class RunSeed>
+Tries_outcome<Run> best_of_tries(RunSeed&& run, unsigned first_seed, int tries)
+{
+  Tries_outcome<Run> out;
+  for(int t = 0; t < tries; ++t)
+  {
+    Run r;
+    try
+    {
+      r = run(first_seed + unsigned(t));
+    }
+    catch(const Operation_cancelled& e)
+    {
+      if(out.runs == 0) throw;
+      out.stopped = true;
+      out.stop_message = e.what();
+      break;
+    }
+    const bool suspect = is_suspect_symmetric_map(r.fixed_share, r.distortion);
+    if(out.runs++ == 0 || !suspect ||
+       symmetric_map_defect(r.fixed_share, r.distortion) <
+         symmetric_map_defect(out.kept.fixed_share, out.kept.distortion))
+      out.kept = std::move(r);
+    if(!suspect) break;
+  }
+  return out;
+}
+
+} // namespace internal
+
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// A check of a symmetric map that needs no ground truth, the counterpart of
 /// `fixed_point_share()`: how far the map is from preserving distances. Over

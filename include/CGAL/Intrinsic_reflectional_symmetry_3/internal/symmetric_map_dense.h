@@ -295,8 +295,8 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
   // mend legs that map onto themselves where the bisector is right (mesh004
   // 75.0 -> 88.6 %, seed 0) and break the map where it strays (mesh016,
   // seed 1: 77.3 -> 50.0 %). Computing both maps and keeping the one of
-  // least symmetric_map_defect() would gain little: 86.3 against 86.1 % over
-  // the 49 maps of seeds 0-2 measured with both (at best 87.4 %), for a second
+  // least symmetric_map_defect() would gain little: 86.0 against 85.7 % over
+  // the 54 maps of seeds 0-2 at 1000 samples (at best 87.1 %), for a second
   // refinement. The residuals, which order the involution below, under the
   // last landmarks.
   if(st.eigenfunctions > 0 && !landmarks.empty())

@@ -598,11 +598,11 @@ struct Tries_outcome
 /// `run(seed)` for `first_seed`, `first_seed + 1`, ..., at most `tries`
 /// runs, until a map is not suspect (`is_suspect_symmetric_map()`); that map
 /// is kept, or else the one of least `symmetric_map_defect()` (the earlier one
-/// on a tie). `Run` has the members `fixed_share` and `distortion`. A run
-/// cancelled by its callback (`Operation_cancelled`, a time limit) after an
-/// earlier run completed ends the loop with the best completed run
-/// (`stopped`): the time spent is not wasted. A cancelled first run, and any
-/// other exception, propagate.
+/// on a tie). `Run` is default-constructible and movable, with the members
+/// `fixed_share` and `distortion`. A run cancelled by its callback
+/// (`Operation_cancelled`, a time limit) after an earlier run completed ends
+/// the loop with the best completed run (`stopped`): the time spent is not
+/// wasted. A cancelled first run, and any other exception, propagate.
 template <class Run, class RunSeed>
 Tries_outcome<Run> best_of_tries(RunSeed&& run, unsigned first_seed, int tries)
 {

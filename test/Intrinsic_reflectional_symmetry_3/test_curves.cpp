@@ -74,7 +74,9 @@ std::vector<Point> vertex_points(const TM& tm)
   return pts;
 }
 
+using irs_test::expect_cancelled;
 using irs_test::mirror_similar_pairs;
+using irs_test::Recording_callback;
 
 // The pipeline up to the symmetric map. Similar pairs from the signatures if
 // `which` is empty, else from the known mirror maps of `which`.
@@ -1347,46 +1349,6 @@ TEST(Curves, ParametersChangeWhatTheySay)
 }
 
 // ---------------------------------------------------------------- the callback
-
-// What a `callback` named parameter sees: the advancements it is called with,
-// and whether it asks to stop once one reaches `stop_at` (> 1: never). The
-// functions serialise the calls, so the vector needs no lock.
-struct Recording_callback
-{
-  std::shared_ptr<std::vector<double>> seen = std::make_shared<std::vector<double>>();
-  double stop_at = 2.;
-  bool operator()(double x) const
-  {
-    seen->push_back(x);
-    return x < stop_at;
-  }
-  // called at least once, with non-decreasing values in [0, 1] ending at 1
-  void expect_complete() const
-  {
-    ASSERT_FALSE(seen->empty());
-    for(std::size_t i = 0; i < seen->size(); ++i)
-    {
-      EXPECT_GE((*seen)[i], 0.);
-      EXPECT_LE((*seen)[i], 1.);
-      if(i > 0) EXPECT_GE((*seen)[i], (*seen)[i - 1]);
-    }
-    EXPECT_EQ(seen->back(), 1.);
-  }
-};
-
-template <typename F>
-void expect_cancelled(F f, const std::string& function)
-{
-  try
-  {
-    f();
-    ADD_FAILURE() << function << ": no Operation_cancelled";
-  }
-  catch(const IRS::Operation_cancelled& e)
-  {
-    EXPECT_NE(std::string(e.what()).find(function), std::string::npos) << e.what();
-  }
-}
 
 // Every long function reports its advancement to `callback`, stops when it
 // returns false (Operation_cancelled naming the function, at the first call

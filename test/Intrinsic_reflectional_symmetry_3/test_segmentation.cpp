@@ -56,7 +56,9 @@ typedef std::vector<std::pair<std::size_t, std::size_t>> Pairs;
 
 namespace {
 
+using irs_test::expect_cancelled;
 using irs_test::mirror_similar_pairs;
+using irs_test::Recording_callback;
 
 // samples to curves; similar pairs from the signatures if `which` is empty
 template <typename TM>
@@ -460,6 +462,44 @@ TEST(Segmentation, OverSegmentationRefinesEverySdfRun)
   const std::size_t nc = IRS::Sdf_over_segmenter(4, 2, 8).from_sdf_values(m, vpm, sdf, capped.map(m));
   EXPECT_LE(nc, 4u);
   expect_connected_cover(m, capped.values, nc, "capped refinement");
+}
+
+// The merged segmentation reports its advancement to `callback` (the regions
+// up to 0.5, then after the over-segmentation), stops when it returns false
+// (Operation_cancelled naming symmetry_aware_segmentation(), also when the
+// stop comes during the regions), and gives the same segments with a
+// callback as without.
+TEST(Segmentation, CallbackReportsAndCancels)
+{
+  const auto shape = IRS::generate_ellipsoid<Mesh>(800);
+  const Mesh& m = shape.mesh;
+  Pipeline<Mesh> p;
+  p.run(m, 200, shape.symmetries, {0});
+  ASSERT_FALSE(p.curves.empty());
+  Face_labels<Mesh> plain(m);
+  const std::size_t n = IRS::symmetry_aware_segmentation(m, p.D, p.curves, plain.map(m));
+  for(double stop_at : {2., 0., 0.3, 0.9, 1.})
+  {
+    SCOPED_TRACE("stop at " + std::to_string(stop_at));
+    Recording_callback callback;
+    callback.stop_at = stop_at;
+    Face_labels<Mesh> labels(m);
+    auto segment = [&] {
+      return IRS::symmetry_aware_segmentation(m, p.D, p.curves, labels.map(m), IRS::parameters::callback(callback));
+    };
+    if(stop_at <= 1.)
+    {
+      expect_cancelled(segment, "symmetry_aware_segmentation");
+      ASSERT_FALSE(callback.seen->empty());
+      EXPECT_GE(callback.seen->back(), stop_at);
+      EXPECT_EQ(std::count_if(callback.seen->begin(), callback.seen->end(), [&](double x) { return x >= stop_at; }), 1);
+      continue;
+    }
+    EXPECT_EQ(segment(), n);
+    callback.expect_complete();
+    EXPECT_TRUE(std::any_of(callback.seen->begin(), callback.seen->end(), [](double x) { return x > 0. && x <= 0.5; }));
+    EXPECT_EQ(labels.values, plain.values);
+  }
 }
 
 TEST(Segmentation, BadInputThrowsInputError)

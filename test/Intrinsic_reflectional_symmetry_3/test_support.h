@@ -7,13 +7,18 @@
 #ifndef CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_TEST_SUPPORT_H
 #define CGAL_INTRINSIC_REFLECTIONAL_SYMMETRY_3_TEST_SUPPORT_H
 
+#include <CGAL/Intrinsic_reflectional_symmetry_3/errors.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
 #include <CGAL/Random.h>
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -51,6 +56,46 @@ inline Pairs mirror_similar_pairs(const std::vector<CGAL::Intrinsic_reflectional
     for(std::size_t j = i + 1; j < n; ++j)
       if(similar[i * n + j] || rng.get_double() < noise) pairs.emplace_back(i, j);
   return pairs;
+}
+
+// What a `callback` named parameter sees: the advancements it is called with,
+// and whether it asks to stop once one reaches `stop_at` (> 1: never). The
+// functions serialise the calls, so the vector needs no lock.
+struct Recording_callback
+{
+  std::shared_ptr<std::vector<double>> seen = std::make_shared<std::vector<double>>();
+  double stop_at = 2.;
+  bool operator()(double x) const
+  {
+    seen->push_back(x);
+    return x < stop_at;
+  }
+  // called at least once, with non-decreasing values in [0, 1] ending at 1
+  void expect_complete() const
+  {
+    ASSERT_FALSE(seen->empty());
+    for(std::size_t i = 0; i < seen->size(); ++i)
+    {
+      EXPECT_GE((*seen)[i], 0.);
+      EXPECT_LE((*seen)[i], 1.);
+      if(i > 0) EXPECT_GE((*seen)[i], (*seen)[i - 1]);
+    }
+    EXPECT_EQ(seen->back(), 1.);
+  }
+};
+
+template <typename F>
+void expect_cancelled(F f, const std::string& function)
+{
+  try
+  {
+    f();
+    ADD_FAILURE() << function << ": no Operation_cancelled";
+  }
+  catch(const CGAL::Intrinsic_reflectional_symmetry_3::Operation_cancelled& e)
+  {
+    EXPECT_NE(std::string(e.what()).find(function), std::string::npos) << e.what();
+  }
 }
 
 } // namespace irs_test

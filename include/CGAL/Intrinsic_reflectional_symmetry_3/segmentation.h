@@ -11,6 +11,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/parameters.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/symmetric_map.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/progress.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/segmentation_graph.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/segmentation_merge.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/segmentation_sdf.h>
@@ -440,6 +441,13 @@ std::size_t merge_over_segmentation(const TriangleMesh& tm, FaceRegionMap region
 ///     \cgalParamType{a model of `OverSegmenter`}
 ///     \cgalParamDefault{`Sdf_over_segmenter()`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{called with the advancement (between 0 and 1) while the regions are grown
+///       (up to 0.5), after the over-segmentation (0.9) and at the end; returning `false` stops the function.
+///       The over-segmenter itself is not interrupted: the function stops when it returns.}
+///     \cgalParamType{a model of `std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{keep_off_axis_parts}
 ///     \cgalParamDescription{if `true`, only the parts a curve crosses (at least 3 faces with a curve vertex)
 ///       merge into the curve's region, the symmetric core; the region's other parts, which come in mirror
@@ -454,6 +462,7 @@ std::size_t merge_over_segmentation(const TriangleMesh& tm, FaceRegionMap region
 ///
 /// \returns the number of segments
 /// \throws Input_error `not_triangle_mesh`, `empty_mesh`, or `invalid_parameter`
+/// \throws Operation_cancelled if the callback returns `false`
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh, typename CurveRange,
           typename FaceSegmentMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::size_t symmetry_aware_segmentation(const TriangleMesh& tm, const Geodesic_distance_matrix& D,
@@ -468,11 +477,29 @@ std::size_t symmetry_aware_segmentation(const TriangleMesh& tm, const Geodesic_d
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, tm));
   std::vector<long> region(g.number_of_faces, -1);
-  symmetric_regions<ConcurrencyTag>(tm, D, curves, boost::make_iterator_property_map(region.begin(), fim), np);
+  internal::Progress progress(internal::progress_callback(np), "symmetry_aware_segmentation()");
+  {
+    // the regions report the first half of the advancement; a stop there names this function
+    const internal::Progress::Callback regions_callback = [&progress](double x) {
+      progress.report(0.5 * x, true);
+      return !progress.stopped();
+    };
+    try
+    {
+      symmetric_regions<ConcurrencyTag>(tm, D, curves, boost::make_iterator_property_map(region.begin(), fim),
+                                        np.callback(regions_callback));
+    }
+    catch(const Operation_cancelled&)
+    {
+      progress.check();
+      throw;
+    }
+  }
 
   std::vector<std::size_t> part(g.number_of_faces, 0);
   const auto over = choose_parameter(get_parameter(np, internal_np::over_segmenter), Sdf_over_segmenter());
   over(tm, vpm, boost::make_iterator_property_map(part.begin(), fim));
+  progress.step(0.9);
 
   const double minimum_area = internal::segmentation_minimum_area<TriangleMesh>(np) * g.total_area;
   const bool merge_uncovered = choose_parameter(get_parameter(np, internal_np::merge_uncovered_parts), false);
@@ -496,6 +523,7 @@ std::size_t symmetry_aware_segmentation(const TriangleMesh& tm, const Geodesic_d
   const std::size_t n = internal::merge_parts(g, region, p, minimum_area, merge_uncovered,
                                               minimum_coverage, seg, off_axis ? &axis_faces : nullptr);
   internal::write_face_segments(tm, seg, segment, fim);
+  progress.step(1.);
   return n;
 }
 

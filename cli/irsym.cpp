@@ -111,7 +111,9 @@ usage: irsym MESH --out DIR [options]
                        (default) or -Z
   --time-limit S       stop S seconds after the mesh is read (exit status 4), checked during
                        the geodesic matrix, the voting, the curves and the map (the library's
-                       callback); the other stages run to their end. Reached during a second
+                       callback), and once the preparation and the SDF end; once a map is
+                       complete, the segmentation, the repair and the outputs run to their
+                       end. Reached during a second
                        or later --tries run, it keeps the best complete run and goes on (a
                        warning in report.json; results.tries marks the run "stopped")
   --help               this text
@@ -483,6 +485,10 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   const std::function<bool(double)> within_limit = [deadline, limited](double) {
     return !limited || std::chrono::steady_clock::now() < deadline;
   };
+  // the stages without a callback (CGAL's remeshing and SDF) are checked once they end
+  auto stop_if_late = [&within_limit](const std::string& stage) {
+    if(!within_limit(1.)) throw IRS::Operation_cancelled("the " + stage + " ended after it");
+  };
   const fs::path out(opt.out_dir);
   const IRS::Input_report stats = IRS::check_input(input);
   {
@@ -517,16 +523,19 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
                  : IRS::prepare_mesh(input, IRS::parameters::target_number_of_vertices(std::size_t(opt.target_vertices)));
   const Mesh& work = prepared.working_mesh();
   log.stop();
+  stop_if_late("preparation");
 
   log.start("geodesic oracle (" + opt.geodesics + ")");
   const Oracle oracle(work);
   log.stop();
+  stop_if_late("geodesic oracle's set-up");
 
   // the SDF does not depend on the samples: once for all tries
   log.start("vertex SDF");
   const std::vector<double> vertex_sdf = IRS::vertex_sdf_values(work);
   const std::vector<double> areas = IRS::vertex_areas(work);
   log.stop();
+  stop_if_late("vertex SDF");
 
   // --tries: another seed while the map is suspect (it holds parts far from
   // the curves in place, or does not preserve distances); the first map that
@@ -548,13 +557,14 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     opt.seed, opt.tries);
   if(outcome.stopped) {
     log.abandon();
+    const unsigned stopped_seed = opt.seed + unsigned(outcome.runs);
     std::ostringstream os;
     os << "the time limit of " << opt.time_limit << " s was reached during the run of seed "
-       << opt.seed + unsigned(outcome.runs) << " (" << outcome.stop_message << "); the outputs come from seed "
+       << stopped_seed << " (" << outcome.stop_message << "); the outputs come from seed "
        << outcome.kept.seed << ", the best of the " << outcome.runs << " complete run(s)";
     std::cerr << "irsym: warning: " << os.str() << '\n';
     warnings.push(os.str());
-    tries.push(irsym::Json::object().add("seed", opt.seed + unsigned(outcome.runs)).add("stopped", true));
+    tries.push(irsym::Json::object().add("seed", stopped_seed).add("stopped", true));
   }
   Seed_run kept = std::move(outcome.kept);
   report.add("warnings", warnings);

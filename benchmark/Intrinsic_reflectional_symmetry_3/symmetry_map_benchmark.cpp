@@ -43,13 +43,15 @@
 // to the remeshed shape by nearness in space cannot tell the two sheets
 // apart. Diagnostics only: CR% stays the protocol's figure.
 //
-// usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--similarity EPS_SIM]
+// usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--similarity EPS_SIM] [--distance EPS_DIS]
 //                               [--seed S | --seeds S1,S2,...] [--tries N] [--write DIR]
 //                               [--threads T] [--no-scape] [--no-faust]
 //   DATA_DIR  default ../shared/data (relative to the current directory);
 //             faust_5k/ and kim_bim_benchmark/ inside it, each skipped if absent
 //   N         samples per shape (default 1000)
 //   NAME      only the shapes whose name contains NAME
+//   EPS_SIM, EPS_DIS  the similarity and distance thresholds of the signatures and the voting
+//             (default: the package's, 0.025 and 0.02)
 //   S         seed of the farthest-point samples (default 0): the spread of the
 //             figures over seeds tells a real difference from a sampling accident;
 //             with --seeds, everything runs once per seed and a last table gives,
@@ -117,6 +119,7 @@ struct Options
   std::string data = "../shared/data";
   std::size_t samples = 1000;
   double similarity = -1.; // < 0: the package's default
+  double distance = -1.;   // eps_DIS; < 0: the package's default
   unsigned seed = 0;
   std::vector<unsigned> seeds{0}; // --seeds: one run per seed
   int tries = 1; // --tries: runs with seeds seed, seed + 1, ... while the map is suspect
@@ -168,7 +171,9 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   r.seconds[1] = t.time(); t.reset();
 
   auto tau = get(CGAL::dynamic_vertex_property_t<double>(), m);
-  const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(m, D, similar, tau);
+  const IRS::Irsa_voting_result voting =
+    o.distance < 0. ? IRS::compute_irsa_transform(m, D, similar, tau)
+                    : IRS::compute_irsa_transform(m, D, similar, tau, IRS::parameters::distance_threshold(o.distance));
   r.voting_pairs = voting.voting_pairs.size();
   r.seconds[2] = t.time(); t.reset();
 
@@ -633,6 +638,7 @@ int main(int argc, char** argv)
     if(a == "--samples") o.samples = std::size_t(std::max(1L, std::atol(value().c_str())));
     else if(a == "--only") o.only = value();
     else if(a == "--similarity") o.similarity = std::atof(value().c_str());
+    else if(a == "--distance") o.distance = std::atof(value().c_str());
     else if(a == "--seed") o.seeds = {unsigned(std::strtoul(value().c_str(), nullptr, 10))};
     else if(a == "--seeds")
     {
@@ -650,7 +656,7 @@ int main(int argc, char** argv)
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--write DIR] "
-                   "[--threads T] [--similarity EPS_SIM] [--seed S | --seeds S1,S2,...] [--tries N] [--no-scape] [--no-faust]\n";
+                   "[--threads T] [--similarity EPS_SIM] [--distance EPS_DIS] [--seed S | --seeds S1,S2,...] [--tries N] [--no-scape] [--no-faust]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }
@@ -664,7 +670,9 @@ int main(int argc, char** argv)
   std::cout << "symmetric map benchmark: data " << o.data << ", " << o.samples
             << " samples per shape (seed" << (o.seeds.size() > 1 ? "s " : " ") << seed_list(o.seeds)
             << (o.tries > 1 ? ", up to " + std::to_string(o.tries) + " runs where the map is suspect" : std::string())
-            << "), package defaults otherwise; e = geodesic error / sqrt(area), CR = % e <= "
+            << ")" << (o.similarity >= 0. ? ", eps_SIM " + std::to_string(o.similarity) : std::string())
+            << (o.distance >= 0. ? ", eps_DIS " + std::to_string(o.distance) : std::string())
+            << ", package defaults otherwise; e = geodesic error / sqrt(area), CR = % e <= "
             << std::setprecision(4) << kim_threshold << " (unmapped = failure), axis = distance from the "
             << "ground-truth axis points to the top curve / sqrt(area); times in seconds (wall clock)\n";
   if(!fs::is_directory(o.data))

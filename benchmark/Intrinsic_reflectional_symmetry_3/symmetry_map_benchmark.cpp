@@ -170,21 +170,24 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   r.similar_pairs = similar.size();
   r.seconds[1] = t.time(); t.reset();
 
+  // eps_DIS goes to every stage that tests distances, as their documentation asks
+  const double distance = o.distance < 0. ? IRS::internal::default_distance_threshold : o.distance;
   auto tau = get(CGAL::dynamic_vertex_property_t<double>(), m);
   const IRS::Irsa_voting_result voting =
-    o.distance < 0. ? IRS::compute_irsa_transform(m, D, similar, tau)
-                    : IRS::compute_irsa_transform(m, D, similar, tau, IRS::parameters::distance_threshold(o.distance));
+    IRS::compute_irsa_transform(m, D, similar, tau, IRS::parameters::distance_threshold(distance));
   r.voting_pairs = voting.voting_pairs.size();
   r.seconds[2] = t.time(); t.reset();
 
-  IRS::extract_irsa_curves(m, D, voting, tau, std::back_inserter(r.curves));
+  IRS::extract_irsa_curves(m, D, voting, tau, std::back_inserter(r.curves),
+                           IRS::parameters::distance_threshold(distance));
   r.seconds[3] = t.time(); t.reset();
 
   auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
   auto map_region = get(CGAL::dynamic_vertex_property_t<int>(), m);
-  IRS::symmetric_vertex_map(m, D, r.curves, partner, IRS::parameters::vertex_region_map(map_region));
+  IRS::symmetric_vertex_map(m, D, r.curves, partner,
+                            IRS::parameters::vertex_region_map(map_region).distance_threshold(distance));
   auto region = get(CGAL::dynamic_face_property_t<int>(), m);
-  r.region_faces = IRS::symmetric_regions(m, D, r.curves, region);
+  r.region_faces = IRS::symmetric_regions(m, D, r.curves, region, IRS::parameters::distance_threshold(distance));
   r.partner.assign(num_vertices(m), -1);
   for(Vertex v : vertices(m)) r.partner[v.idx()] = get(partner, v);
   r.seconds[4] = t.time();
@@ -221,7 +224,9 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
 
   // CR0%: the map without its spectral refinement, from the same curves (not timed)
   auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
-  IRS::symmetric_vertex_map(m, kept.D, kept.curves, partner, IRS::parameters::number_of_eigenfunctions(0));
+  IRS::symmetric_vertex_map(m, kept.D, kept.curves, partner,
+                            IRS::parameters::number_of_eigenfunctions(0).distance_threshold(
+                              o.distance < 0. ? IRS::internal::default_distance_threshold : o.distance));
   kept.partner_without_spectral.assign(num_vertices(m), -1);
   for(Vertex v : vertices(m)) kept.partner_without_spectral[v.idx()] = get(partner, v);
   return kept;

@@ -119,7 +119,7 @@ struct Options
   std::string data = "../shared/data";
   std::size_t samples = 1000;
   double similarity = -1.; // < 0: the package's default
-  double distance = -1.;   // eps_DIS; < 0: the package's default
+  double distance = IRS::internal::default_distance_threshold; // eps_DIS
   unsigned seed = 0;
   std::vector<unsigned> seeds{0}; // --seeds: one run per seed
   int tries = 1; // --tries: runs with seeds seed, seed + 1, ... while the map is suspect
@@ -171,23 +171,22 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   r.seconds[1] = t.time(); t.reset();
 
   // eps_DIS goes to every stage that tests distances, as their documentation asks
-  const double distance = o.distance < 0. ? IRS::internal::default_distance_threshold : o.distance;
   auto tau = get(CGAL::dynamic_vertex_property_t<double>(), m);
   const IRS::Irsa_voting_result voting =
-    IRS::compute_irsa_transform(m, D, similar, tau, IRS::parameters::distance_threshold(distance));
+    IRS::compute_irsa_transform(m, D, similar, tau, IRS::parameters::distance_threshold(o.distance));
   r.voting_pairs = voting.voting_pairs.size();
   r.seconds[2] = t.time(); t.reset();
 
   IRS::extract_irsa_curves(m, D, voting, tau, std::back_inserter(r.curves),
-                           IRS::parameters::distance_threshold(distance));
+                           IRS::parameters::distance_threshold(o.distance));
   r.seconds[3] = t.time(); t.reset();
 
   auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
   auto map_region = get(CGAL::dynamic_vertex_property_t<int>(), m);
   IRS::symmetric_vertex_map(m, D, r.curves, partner,
-                            IRS::parameters::vertex_region_map(map_region).distance_threshold(distance));
+                            IRS::parameters::vertex_region_map(map_region).distance_threshold(o.distance));
   auto region = get(CGAL::dynamic_face_property_t<int>(), m);
-  r.region_faces = IRS::symmetric_regions(m, D, r.curves, region, IRS::parameters::distance_threshold(distance));
+  r.region_faces = IRS::symmetric_regions(m, D, r.curves, region, IRS::parameters::distance_threshold(o.distance));
   r.partner.assign(num_vertices(m), -1);
   for(Vertex v : vertices(m)) r.partner[v.idx()] = get(partner, v);
   r.seconds[4] = t.time();
@@ -225,8 +224,7 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
   // CR0%: the map without its spectral refinement, from the same curves (not timed)
   auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
   IRS::symmetric_vertex_map(m, kept.D, kept.curves, partner,
-                            IRS::parameters::number_of_eigenfunctions(0).distance_threshold(
-                              o.distance < 0. ? IRS::internal::default_distance_threshold : o.distance));
+                            IRS::parameters::number_of_eigenfunctions(0).distance_threshold(o.distance));
   kept.partner_without_spectral.assign(num_vertices(m), -1);
   for(Vertex v : vertices(m)) kept.partner_without_spectral[v.idx()] = get(partner, v);
   return kept;
@@ -676,7 +674,7 @@ int main(int argc, char** argv)
             << " samples per shape (seed" << (o.seeds.size() > 1 ? "s " : " ") << seed_list(o.seeds)
             << (o.tries > 1 ? ", up to " + std::to_string(o.tries) + " runs where the map is suspect" : std::string())
             << ")" << (o.similarity >= 0. ? ", eps_SIM " + std::to_string(o.similarity) : std::string())
-            << (o.distance >= 0. ? ", eps_DIS " + std::to_string(o.distance) : std::string())
+            << (o.distance != IRS::internal::default_distance_threshold ? ", eps_DIS " + std::to_string(o.distance) : std::string())
             << ", package defaults otherwise; e = geodesic error / sqrt(area), CR = % e <= "
             << std::setprecision(4) << kim_threshold << " (unmapped = failure), axis = distance from the "
             << "ground-truth axis points to the top curve / sqrt(area); times in seconds (wall clock)\n";

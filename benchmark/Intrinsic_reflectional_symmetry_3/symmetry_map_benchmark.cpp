@@ -44,7 +44,7 @@
 // apart. Diagnostics only: CR% stays the protocol's figure.
 //
 // usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--similarity EPS_SIM] [--distance EPS_DIS]
-//                               [--seed S | --seeds S1,S2,...] [--tries N] [--write DIR]
+//                               [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--write DIR]
 //                               [--threads T] [--no-scape] [--no-faust]
 //   DATA_DIR  default ../shared/data (relative to the current directory);
 //             faust_5k/ and kim_bim_benchmark/ inside it, each skipped if absent
@@ -52,6 +52,9 @@
 //   NAME      only the shapes whose name contains NAME
 //   EPS_SIM, EPS_DIS  the similarity and distance thresholds of the signatures and the voting
 //             (default: the package's, 0.025 and 0.02)
+//   T         symmetry_tolerance of the final regions and the map (default: the
+//             package's 1.5; the extraction keeps its own 1.0), for studies of
+//             how far the regions should run on a posed shape
 //   S         seed of the farthest-point samples (default 0): the spread of the
 //             figures over seeds tells a real difference from a sampling accident;
 //             with --seeds, everything runs once per seed and a last table gives,
@@ -120,6 +123,7 @@ struct Options
   std::size_t samples = 1000;
   double similarity = -1.; // < 0: the package's default
   double distance = IRS::internal::default_distance_threshold; // eps_DIS
+  double region_tolerance = IRS::internal::default_region_symmetry_tolerance; // of the regions and the map
   unsigned seed = 0;
   std::vector<unsigned> seeds{0}; // --seeds: one run per seed
   int tries = 1; // --tries: runs with seeds seed, seed + 1, ... while the map is suspect
@@ -184,9 +188,13 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
   auto map_region = get(CGAL::dynamic_vertex_property_t<int>(), m);
   IRS::symmetric_vertex_map(m, D, r.curves, partner,
-                            IRS::parameters::vertex_region_map(map_region).distance_threshold(o.distance));
+                            IRS::parameters::vertex_region_map(map_region)
+                              .distance_threshold(o.distance)
+                              .symmetry_tolerance(o.region_tolerance));
   auto region = get(CGAL::dynamic_face_property_t<int>(), m);
-  r.region_faces = IRS::symmetric_regions(m, D, r.curves, region, IRS::parameters::distance_threshold(o.distance));
+  r.region_faces = IRS::symmetric_regions(
+    m, D, r.curves, region,
+    IRS::parameters::distance_threshold(o.distance).symmetry_tolerance(o.region_tolerance));
   r.partner.assign(num_vertices(m), -1);
   for(Vertex v : vertices(m)) r.partner[v.idx()] = get(partner, v);
   r.seconds[4] = t.time();
@@ -224,7 +232,9 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
   // CR0%: the map without its spectral refinement, from the same curves (not timed)
   auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
   IRS::symmetric_vertex_map(m, kept.D, kept.curves, partner,
-                            IRS::parameters::number_of_eigenfunctions(0).distance_threshold(o.distance));
+                            IRS::parameters::number_of_eigenfunctions(0)
+                              .distance_threshold(o.distance)
+                              .symmetry_tolerance(o.region_tolerance));
   kept.partner_without_spectral.assign(num_vertices(m), -1);
   for(Vertex v : vertices(m)) kept.partner_without_spectral[v.idx()] = get(partner, v);
   return kept;
@@ -642,6 +652,7 @@ int main(int argc, char** argv)
     else if(a == "--only") o.only = value();
     else if(a == "--similarity") o.similarity = std::atof(value().c_str());
     else if(a == "--distance") o.distance = std::atof(value().c_str());
+    else if(a == "--symmetry-tolerance") o.region_tolerance = std::atof(value().c_str());
     else if(a == "--seed") o.seeds = {unsigned(std::strtoul(value().c_str(), nullptr, 10))};
     else if(a == "--seeds")
     {
@@ -659,7 +670,7 @@ int main(int argc, char** argv)
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--write DIR] "
-                   "[--threads T] [--similarity EPS_SIM] [--distance EPS_DIS] [--seed S | --seeds S1,S2,...] [--tries N] [--no-scape] [--no-faust]\n";
+                   "[--threads T] [--similarity EPS_SIM] [--distance EPS_DIS] [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--no-scape] [--no-faust]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }
@@ -675,6 +686,9 @@ int main(int argc, char** argv)
             << (o.tries > 1 ? ", up to " + std::to_string(o.tries) + " runs where the map is suspect" : std::string())
             << ")" << (o.similarity >= 0. ? ", eps_SIM " + std::to_string(o.similarity) : std::string())
             << (o.distance != IRS::internal::default_distance_threshold ? ", eps_DIS " + std::to_string(o.distance) : std::string())
+            << (o.region_tolerance != IRS::internal::default_region_symmetry_tolerance
+                  ? ", symmetry_tolerance of the regions and map " + std::to_string(o.region_tolerance)
+                  : std::string())
             << ", package defaults otherwise; e = geodesic error / sqrt(area), CR = % e <= "
             << std::setprecision(4) << kim_threshold << " (unmapped = failure), axis = distance from the "
             << "ground-truth axis points to the top curve / sqrt(area); times in seconds (wall clock)\n";

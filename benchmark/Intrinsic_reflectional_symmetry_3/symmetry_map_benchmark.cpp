@@ -146,6 +146,13 @@ struct Pipeline_result
   double seconds[6] = {0., 0., 0., 0., 0., 0.}; // geodesics, signatures, voting, curves, map, total
 };
 
+// the thresholds that every stage after the voting tests distances with, as
+// their documentation asks: one set for the map, the regions and the CR0% map
+auto map_parameters(const Options& o)
+{
+  return IRS::parameters::distance_threshold(o.distance).symmetry_tolerance(o.region_tolerance);
+}
+
 // the package's pipeline with its defaults; only the number of samples and the
 // seed are set. The vertex SDF and areas, which do not depend on the samples,
 // come from run_pipeline(), once for all runs, as in irsym
@@ -187,14 +194,9 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
 
   auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
   auto map_region = get(CGAL::dynamic_vertex_property_t<int>(), m);
-  IRS::symmetric_vertex_map(m, D, r.curves, partner,
-                            IRS::parameters::vertex_region_map(map_region)
-                              .distance_threshold(o.distance)
-                              .symmetry_tolerance(o.region_tolerance));
+  IRS::symmetric_vertex_map(m, D, r.curves, partner, map_parameters(o).vertex_region_map(map_region));
   auto region = get(CGAL::dynamic_face_property_t<int>(), m);
-  r.region_faces = IRS::symmetric_regions(
-    m, D, r.curves, region,
-    IRS::parameters::distance_threshold(o.distance).symmetry_tolerance(o.region_tolerance));
+  r.region_faces = IRS::symmetric_regions(m, D, r.curves, region, map_parameters(o));
   r.partner.assign(num_vertices(m), -1);
   for(Vertex v : vertices(m)) r.partner[v.idx()] = get(partner, v);
   r.seconds[4] = t.time();
@@ -231,10 +233,7 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
 
   // CR0%: the map without its spectral refinement, from the same curves (not timed)
   auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
-  IRS::symmetric_vertex_map(m, kept.D, kept.curves, partner,
-                            IRS::parameters::number_of_eigenfunctions(0)
-                              .distance_threshold(o.distance)
-                              .symmetry_tolerance(o.region_tolerance));
+  IRS::symmetric_vertex_map(m, kept.D, kept.curves, partner, map_parameters(o).number_of_eigenfunctions(0));
   kept.partner_without_spectral.assign(num_vertices(m), -1);
   for(Vertex v : vertices(m)) kept.partner_without_spectral[v.idx()] = get(partner, v);
   return kept;

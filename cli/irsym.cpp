@@ -90,8 +90,8 @@ usage: irsym MESH --out DIR [options]
                        again from the samples on with seeds S+1, S+2, ..., at most N runs in
                        all; keep the first map that is not suspect, or else the one of least
                        isometric_distortion + 0.3 fixed_point_share (default: 5; 1 runs
-                       seed S alone). Measured: no second run on FAUST's 19 humans,
-                       2.6-2.8 runs per mesh on SCAPE's 18 (5 instead of 3: +0.8 to +1.6
+                       seed S alone). Measured: no second run on FAUST's 19 humans, 2.6
+                       runs per mesh on SCAPE's 18 (seed 2; 5 instead of 3: +0.8 to +1.6
                        points of correspondence rate there, over three seeds)
   --geodesics G        geodesic oracle: heat (default), exact or dijkstra
   --threads T          worker threads (default: all cores); results do not depend on it

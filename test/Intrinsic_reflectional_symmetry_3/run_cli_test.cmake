@@ -31,6 +31,11 @@ foreach(key stages input parameters results similar_sample_pairs curves peak_mem
     message(FATAL_ERROR "report.json lacks '${key}': ${jerr}\n${report}")
   endif()
 endforeach()
+# the default number of --tries is the one the README and --help give
+string(JSON default_tries ERROR_VARIABLE jerr GET "${report}" parameters tries)
+if(jerr OR NOT default_tries EQUAL 5)
+  message(FATAL_ERROR "report.json: parameters.tries '${default_tries}' without --tries, expected 5 ${jerr}")
+endif()
 # the snowman's map is right: it holds no part in place far from the curve,
 # and preserves distances
 string(JSON fixed ERROR_VARIABLE jerr GET "${report}" results fixed_point_share)

@@ -45,7 +45,7 @@
 //
 // usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--similarity EPS_SIM] [--distance EPS_DIS]
 //                               [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--write DIR]
-//                               [--threads T] [--no-scape] [--no-faust]
+//                               [--threads T] [--noise LEVEL] [--holes H] [--no-scape] [--no-faust]
 //   DATA_DIR  default ../shared/data (relative to the current directory);
 //             faust_5k/ and kim_bim_benchmark/ inside it, each skipped if absent
 //   N         samples per shape (default 1000)
@@ -69,7 +69,16 @@
 //   DIR       write NAME.map (partner per vertex, -1 for none) and
 //             NAME.curves (one curve per line) there, the input formats of
 //             eval_symmetry.py (for SCAPE: of the mended mesh, written as NAME.off);
-//             with several seeds, in DIR/seed_S
+//             with several seeds, in DIR/seed_S; with --noise or --holes, the
+//             perturbed mesh too, as NAME.off (the map's indices are its own)
+//   LEVEL, H  the robustness study of the map (paper Fig. 10-11, the
+//             perturbations of voting_benchmark --robustness): every shape is
+//             first given Gaussian vertex noise of mean displacement LEVEL mean
+//             edge lengths (seed 7), then H small holes removing 3 % of its
+//             faces (seed 11, or the next seed up to 20 where those holes
+//             would pinch a vertex or cut off a part); the ground truth
+//             follows the vertices, and the checks of removed vertices are
+//             dropped (column checks)
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
@@ -79,6 +88,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/symmetric_map.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/perturbed_copies.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -130,6 +140,9 @@ struct Options
   std::string only, write;
   int threads = 0;
   bool faust = true, scape = true;
+  double noise = 0.;     // --noise: mean displacement, in mean edge lengths
+  std::size_t holes = 0; // --holes: small holes cut (3 % of the faces)
+  bool perturbed() const { return noise > 0. || holes > 0; }
 };
 
 struct Pipeline_result
@@ -416,7 +429,7 @@ void print_header()
             << std::setw(8) << "geod s" << std::setw(7) << "sig s" << std::setw(8) << "vote s" << std::setw(8)
             << "curve s" << std::setw(7) << "map s" << std::setw(8) << "total s" << std::setw(8) << "own%" << std::setw(7) << "iso%" << std::setw(8) << "CRiso%"
             << std::setw(11) << "fail>iso%" << std::setw(10) << "contact%" << std::setw(8) << "fixed%" << std::setw(7) << "dist" << std::setw(6) << "seed"
-            << std::setw(6) << "runs" << '\n';
+            << std::setw(6) << "runs" << std::setw(8) << "checks" << '\n';
 }
 
 void print_row(const std::string& name, const Mesh& m, std::size_t samples, const Pipeline_result& r, const Metrics& e)
@@ -430,7 +443,7 @@ void print_row(const std::string& name, const Mesh& m, std::size_t samples, cons
             << r.seconds[5] << std::setprecision(1) << std::setw(8) << e.own_side() << std::setw(7) << e.isometric_share()
             << std::setprecision(2) << std::setw(8) << e.cr_isometric() << std::setprecision(1) << std::setw(11)
             << e.failed_more_isometric() << std::setw(10) << e.at_contact() << std::setw(8) << 100. * r.fixed_share
-            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << r.seed << std::setw(6) << r.runs << std::endl;
+            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << r.seed << std::setw(6) << r.runs << std::setw(8) << e.checks << std::endl;
 }
 
 struct Summary
@@ -470,6 +483,42 @@ struct Faust_means
   double all = 0., rest = 0., posed = 0., subject0_rest = 0.;
 };
 
+// --noise, --holes: the perturbed copy of `m` (noise first, then holes), the
+// ground truth carried over (the noise keeps the vertices; a hole drops the
+// pairs of its vertices). False if the holes could not be cut.
+bool perturb(const Options& o, Mesh& m, std::vector<std::pair<std::size_t, std::size_t>>& gt)
+{
+  if(o.noise > 0.)
+  {
+    double length = 0.;
+    for(auto e : edges(m)) length += CGAL::Polygon_mesh_processing::edge_length(e, m);
+    m = IRS::internal::noisy_copy(m, o.noise, length / double(num_edges(m)), 7u);
+  }
+  if(o.holes == 0) return true;
+  Mesh holed;
+  std::vector<std::ptrdiff_t> to_holed;
+  // seed 11 as voting_benchmark, or the next one where those holes would pinch a vertex or cut off a part
+  unsigned seed = 11u;
+  while(!IRS::internal::holed_copy(m, 0.03, o.holes, seed, holed, to_holed))
+    if(++seed == 21u) return false;
+  std::vector<std::pair<std::size_t, std::size_t>> kept;
+  for(const auto& xy : gt)
+    if(to_holed[xy.first] >= 0 && to_holed[xy.second] >= 0)
+      kept.emplace_back(std::size_t(to_holed[xy.first]), std::size_t(to_holed[xy.second]));
+  gt.swap(kept);
+  m = std::move(holed);
+  return true;
+}
+
+// the perturbation's words for the tables' titles
+std::string perturbation(const Options& o)
+{
+  std::ostringstream os;
+  if(o.noise > 0.) os << ", vertex noise " << o.noise << " mean edge lengths";
+  if(o.holes > 0) os << ", " << o.holes << " holes (3 % of the faces)";
+  return os.str();
+}
+
 Faust_means run_faust(const Options& o)
 {
   const fs::path dir = fs::path(o.data) / "faust_5k" / "faust";
@@ -482,7 +531,8 @@ Faust_means run_faust(const Options& o)
   for(const auto& entry : fs::directory_iterator(dir))
     if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
-  std::cout << "\nFAUST (" << dir.string() << "): dense ground truth corres/X.vts <-> corres/X.sym.vts\n";
+  std::cout << "\nFAUST (" << dir.string() << "): dense ground truth corres/X.vts <-> corres/X.sym.vts"
+            << perturbation(o) << "\n";
   print_header();
   Summary all, rest, posed, subject0_rest;
   for(const std::string& name : names)
@@ -502,10 +552,16 @@ Faust_means run_faust(const Options& o)
     for(std::size_t k = 0; k < x.size(); ++k)
       if(x[k] >= 1 && y[k] >= 1 && std::size_t(x[k]) <= num_vertices(m) && std::size_t(y[k]) <= num_vertices(m))
         gt.emplace_back(std::size_t(x[k] - 1), std::size_t(y[k] - 1)); // 1-based
-    const Pipeline_result r = run_pipeline(m, o);
+    if(!perturb(o, m, gt)) { std::cout << name << ": seeds 11-20 all cut holes that pinch a vertex or cut off a part, skipped\n"; continue; }
+    Pipeline_result r;
+    try { r = run_pipeline(m, o); }
+    catch(const IRS::Input_error& e) { std::cout << name << ": " << e.what() << ", skipped\n"; continue; }
     const Metrics e = evaluate(m, gt, r);
     print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
     write_outputs(o, name, r);
+    if(!o.write.empty() && o.perturbed())
+      CGAL::IO::write_polygon_mesh((fs::path(o.write) / (name + ".off")).string(), m,
+                                   CGAL::parameters::stream_precision(17));
     all.add(e, r);
     // tr_reg_000 .. 009: subject 0 in poses 0..9; tr_reg_010, 020, ...: pose 0 of subjects 1..9
     const int id = std::atoi(name.substr(name.size() - 3).c_str());
@@ -582,7 +638,8 @@ void run_scape(const Options& o)
     if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
   std::cout << "\nSCAPE (" << dir.string() << "): sparse ground truth, " << orbits.size()
-            << " orbits of 1.pid (pairs and axis points); each mesh's pinched vertex mended by repair_input()\n";
+            << " orbits of 1.pid (pairs and axis points); each mesh's pinched vertex mended by repair_input()"
+            << perturbation(o) << "\n";
   print_header();
   Summary all;
   for(const std::string& name : names)
@@ -611,7 +668,10 @@ void run_scape(const Options& o)
       if(to_mended[std::size_t(a)] < 0 || to_mended[std::size_t(b)] < 0) continue;
       gt.emplace_back(std::size_t(to_mended[std::size_t(a)]), std::size_t(to_mended[std::size_t(b)]));
     }
-    const Pipeline_result r = run_pipeline(m, o);
+    if(!perturb(o, m, gt)) { std::cout << name << ": seeds 11-20 all cut holes that pinch a vertex or cut off a part, skipped\n"; continue; }
+    Pipeline_result r;
+    try { r = run_pipeline(m, o); }
+    catch(const IRS::Input_error& e) { std::cout << name << ": " << e.what() << ", skipped\n"; continue; }
     const Metrics e = evaluate(m, gt, r);
     print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
     if(!o.write.empty())
@@ -664,12 +724,14 @@ int main(int argc, char** argv)
     else if(a == "--tries") o.tries = std::clamp(std::atoi(value().c_str()), 1, 100);
     else if(a == "--write") o.write = value();
     else if(a == "--threads") o.threads = std::atoi(value().c_str());
+    else if(a == "--noise") o.noise = std::max(0., std::atof(value().c_str()));
+    else if(a == "--holes") o.holes = std::size_t(std::max(0L, std::atol(value().c_str())));
     else if(a == "--no-scape") o.scape = false;
     else if(a == "--no-faust") o.faust = false;
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--write DIR] "
-                   "[--threads T] [--similarity EPS_SIM] [--distance EPS_DIS] [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--no-scape] [--no-faust]\n";
+                   "[--threads T] [--similarity EPS_SIM] [--distance EPS_DIS] [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--noise LEVEL] [--holes H] [--no-scape] [--no-faust]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }

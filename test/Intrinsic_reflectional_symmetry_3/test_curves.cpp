@@ -31,6 +31,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/symmetric_map.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_extraction.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_level_set.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/perturbed_copies.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/symmetric_map_spectral.h>
 
 #include <CGAL/Dynamic_property_map.h>
@@ -50,6 +51,7 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -713,6 +715,95 @@ TEST(Curves, MapMatchesKnownMirrorOnGeneratedShapes)
     EXPECT_GE(double(q.involutive), 0.8 * double(q.evaluated));
     for(const auto& curve : p.curves) expect_polylines_are_connected(c.shape.mesh, curve);
   }
+}
+
+// Mission point 4 for the map (paper Fig. 10-11; voting_benchmark measures
+// tau, Voting.RobustToNoiseAndSmallHoles tests it): the whole pipeline with
+// the SDF signatures on perturbed copies of the ellipsoid and of the bent
+// capsule (whose end-to-end symmetry is intrinsic only) still maps its
+// region onto the true mirror. The known mirror follows the vertices (noise
+// keeps them; a hole drops the pairs of its vertices), and the map is judged
+// on the unperturbed positions, so the noise is not counted as an error.
+// Not asserted: the bent capsule under noise 0.2 (measured: 66 % within the
+// bound, the top curve on the axis). Its failures lie 5.6 edge lengths from
+// the true mirror, 1.3 of them along the tube: the map turns around the tube.
+// A thin tube is nearly invariant under rotations about its axis, so the end-
+// to-end reflection composed with any such rotation is nearly as isometric,
+// and the noise outweighs what tells them apart (the bending and the caps).
+TEST(Curves, MapIsRobustToNoiseAndSmallHoles)
+{
+  struct Case
+  {
+    std::string name;
+    IRS::Generated_shape<Mesh> shape;
+    double distortion; // allowance for a symmetry that is no exact isometry, as in map_quality()
+    double highest_noise; // in mean edge lengths; see above
+  };
+  // the bent capsule's bending changes lengths by up to 8.4 % (see BentCapsuleGivesItsIntrinsicAxis)
+  const std::vector<Case> cases{{"ellipsoid", IRS::generate_ellipsoid<Mesh>(1500), 0., 0.2},
+                                {"bent capsule", IRS::generate_bent_capsule<Mesh>(1500), 0.2 * (CGAL_PI / 3) / 2.5, 0.1}};
+  for(const Case& c : cases)
+    for(int perturbation = 0; perturbation < 3; ++perturbation)
+    {
+      const double level = perturbation == 0 ? 0.1 : 0.2;
+      if(perturbation < 2 && level > c.highest_noise) continue;
+      const IRS::Generated_shape<Mesh>& shape = c.shape;
+      const double e = shape.mean_edge_length;
+      const std::vector<Point> original = vertex_points(shape.mesh);
+      Mesh m;
+      std::vector<std::ptrdiff_t> to_copy(original.size()); // vertex -> vertex of m (-1: removed)
+      std::iota(to_copy.begin(), to_copy.end(), std::ptrdiff_t(0));
+      std::ostringstream name;
+      name << c.name << ", ";
+      if(perturbation < 2)
+      {
+        m = IRS::internal::noisy_copy(shape.mesh, level, e, 7u);
+        name << "noise " << level << " mean edge lengths";
+      }
+      else
+      {
+        ASSERT_TRUE(IRS::internal::holed_copy(shape.mesh, 0.03, 6, 11u, m, to_copy));
+        name << "6 holes, " << 100. * (1. - double(num_faces(m)) / double(num_faces(shape.mesh))) << " % of the faces";
+      }
+      SCOPED_TRACE(name.str());
+      // the known symmetries and the unperturbed positions, by vertex of m
+      std::vector<Point> pts(num_vertices(m));
+      std::vector<IRS::Known_symmetry> symmetries = shape.symmetries;
+      for(IRS::Known_symmetry& s : symmetries)
+      {
+        s.mirror.assign(num_vertices(m), -1);
+        s.axis.clear();
+      }
+      for(std::size_t v = 0; v < original.size(); ++v)
+      {
+        if(to_copy[v] < 0) continue;
+        const std::size_t copy = std::size_t(to_copy[v]);
+        pts[copy] = original[v];
+        for(std::size_t k = 0; k < symmetries.size(); ++k)
+        {
+          const std::ptrdiff_t w = shape.symmetries[k].mirror[v];
+          if(w >= 0) symmetries[k].mirror[copy] = to_copy[std::size_t(w)];
+        }
+      }
+      for(std::size_t k = 0; k < symmetries.size(); ++k)
+        for(std::size_t a : shape.symmetries[k].axis)
+          if(to_copy[a] >= 0) symmetries[k].axis.push_back(std::size_t(to_copy[a]));
+
+      Pipeline<Mesh> p;
+      p.run(m, 400, symmetries, {});
+      ASSERT_FALSE(p.curves.empty());
+      const std::size_t k = matching_symmetry(pts, p.curves[0], symmetries);
+      const Map_quality q = map_quality(pts, p.partner, p.vertex_region, 0, symmetries[k], 2. * e, c.distortion);
+      std::cout << "[ " << name.str() << " ] top curve ~ " << symmetries[k].name << " (mean distance to its axis "
+                << curve_to_axis(pts, p.curves[0], symmetries[k].axis) / e << " edges); region 0: "
+                << q.region_vertices << " of " << pts.size() << " vertices, " << 100. * q.share()
+                << " % within 2 edges" << (c.distortion > 0. ? " + 8.4 % of the distance to the axis" : "")
+                << " of the true mirror" << std::endl;
+      if(c.distortion > 0.) EXPECT_EQ(k, 0u) << "the bent capsule's top curve should be its end-to-end axis";
+      EXPECT_LE(curve_to_axis(pts, p.curves[0], symmetries[k].axis), 2. * e);
+      EXPECT_GE(q.region_vertices, pts.size() / 2) << "the region should cover most of the shape";
+      EXPECT_GE(q.share(), 0.95);
+    }
 }
 
 TEST(Curves, TwoSnowmenGiveOneCurveAndOneRegionPerSnowman)

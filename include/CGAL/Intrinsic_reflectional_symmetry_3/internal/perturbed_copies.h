@@ -7,6 +7,9 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Surface_mesh.h>
@@ -54,7 +57,10 @@ CGAL::Surface_mesh<Point> noisy_copy(const CGAL::Surface_mesh<Point>& m, double 
 // breadth-first from a random vertex, and holes stay at least two rings
 // apart (so the result stays a 2-manifold with boundary). `map` receives the
 // new index of each old vertex (-1: removed). Returns false if a face could
-// not be re-added (a non-manifold configuration).
+// not be re-added, or if the result has a non-manifold vertex (a ball that is
+// no disk, as near a FAUST finger tip, leaves a pinched vertex) or more
+// connected components than `m` (a ball around a finger cuts it off): the
+// study is of small holes, so the caller tries another seed.
 template <typename Point>
 bool holed_copy(const CGAL::Surface_mesh<Point>& m, double fraction, std::size_t holes, unsigned int seed,
                 CGAL::Surface_mesh<Point>& out, std::vector<std::ptrdiff_t>& map)
@@ -123,7 +129,13 @@ bool holed_copy(const CGAL::Surface_mesh<Point>& m, double fraction, std::size_t
       vs.push_back(Vertex(Size(map[v.idx()])));
     if(out.add_face(vs) == Surface_mesh_t::null_face()) return false;
   }
-  return true;
+  std::vector<typename Surface_mesh_t::Halfedge_index> pinched;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(out, std::back_inserter(pinched));
+  if(!pinched.empty()) return false;
+  auto component_in = get(CGAL::dynamic_face_property_t<std::size_t>(), m);
+  auto component_out = get(CGAL::dynamic_face_property_t<std::size_t>(), out);
+  return CGAL::Polygon_mesh_processing::connected_components(out, component_out) ==
+         CGAL::Polygon_mesh_processing::connected_components(m, component_in);
 }
 
 } // namespace internal

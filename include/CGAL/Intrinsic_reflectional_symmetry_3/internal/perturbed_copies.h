@@ -60,7 +60,8 @@ CGAL::Surface_mesh<Point> noisy_copy(const CGAL::Surface_mesh<Point>& m, double 
 // not be re-added, or if the result has a non-manifold vertex (a ball that is
 // no disk, as near a FAUST finger tip, leaves a pinched vertex) or more
 // connected components than `m` (a ball around a finger cuts it off): the
-// study is of small holes, so the caller tries another seed.
+// study is of small holes, so the caller tries another seed
+// (holed_copy_from_seed()).
 template <typename Point>
 bool holed_copy(const CGAL::Surface_mesh<Point>& m, double fraction, std::size_t holes, unsigned int seed,
                 CGAL::Surface_mesh<Point>& out, std::vector<std::ptrdiff_t>& map)
@@ -136,6 +137,18 @@ bool holed_copy(const CGAL::Surface_mesh<Point>& m, double fraction, std::size_t
   auto component_out = get(CGAL::dynamic_face_property_t<std::size_t>(), out);
   return CGAL::Polygon_mesh_processing::connected_components(out, component_out) ==
          CGAL::Polygon_mesh_processing::connected_components(m, component_in);
+}
+
+// holed_copy() with `seed`, or else with the next of up to `seeds` seeds
+// (those holes would pinch a vertex or cut off a part); `seed` receives the
+// seed used. False if none succeeds.
+template <typename Point>
+bool holed_copy_from_seed(const CGAL::Surface_mesh<Point>& m, double fraction, std::size_t holes, unsigned int& seed,
+                          unsigned int seeds, CGAL::Surface_mesh<Point>& out, std::vector<std::ptrdiff_t>& map)
+{
+  for(unsigned int k = 0; k < seeds; ++k, ++seed)
+    if(holed_copy(m, fraction, holes, seed, out, map)) return true;
+  return false;
 }
 
 } // namespace internal

@@ -55,13 +55,12 @@ CGAL::Surface_mesh<Point> noisy_copy(const CGAL::Surface_mesh<Point>& m, double 
 // A copy of `m` with about `fraction` of its faces removed as `holes` small
 // holes: each hole is the set of faces incident to a ball of vertices grown
 // breadth-first from a random vertex, and holes stay at least two rings
-// apart (so the result stays a 2-manifold with boundary). `map` receives the
-// new index of each old vertex (-1: removed). Returns false if a face could
-// not be re-added, or if the result has a non-manifold vertex (a ball that is
-// no disk, as near a FAUST finger tip, leaves a pinched vertex) or more
-// connected components than `m` (a ball around a finger cuts it off): the
-// study is of small holes, so the caller tries another seed
-// (holed_copy_from_seed()).
+// apart. `map` receives the new index of each old vertex (-1: removed).
+// Returns false if a face could not be re-added, or if the result has a
+// non-manifold vertex (a ball that is no disk pinches one: FAUST tr_reg_006,
+// 8 holes, seed 11) or more connected components than `m` (a ball around a
+// thin part cuts it off: tr_reg_005, same holes). The study is of small
+// holes, so the caller tries another seed (holed_copy_from_seed()).
 template <typename Point>
 bool holed_copy(const CGAL::Surface_mesh<Point>& m, double fraction, std::size_t holes, unsigned int seed,
                 CGAL::Surface_mesh<Point>& out, std::vector<std::ptrdiff_t>& map)

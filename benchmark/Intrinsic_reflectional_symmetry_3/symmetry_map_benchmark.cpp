@@ -488,12 +488,7 @@ struct Faust_means
 // pairs of its vertices). False if the holes could not be cut.
 bool perturb(const Options& o, Mesh& m, std::vector<std::pair<std::size_t, std::size_t>>& gt)
 {
-  if(o.noise > 0.)
-  {
-    double length = 0.;
-    for(auto e : edges(m)) length += CGAL::Polygon_mesh_processing::edge_length(e, m);
-    m = IRS::internal::noisy_copy(m, o.noise, length / double(num_edges(m)), 7u);
-  }
+  if(o.noise > 0.) m = IRS::internal::noisy_copy(m, o.noise, IRS::internal::mean_edge_length(m), 7u);
   if(o.holes == 0) return true;
   Mesh holed;
   std::vector<std::ptrdiff_t> to_holed;
@@ -505,6 +500,25 @@ bool perturb(const Options& o, Mesh& m, std::vector<std::pair<std::size_t, std::
       kept.emplace_back(std::size_t(to_holed[xy.first]), std::size_t(to_holed[xy.second]));
   gt.swap(kept);
   m = std::move(holed);
+  return true;
+}
+
+// perturb(), then run_pipeline(); false, saying why the shape is skipped, if
+// the holes could not be cut or the pipeline refuses the (perturbed) mesh
+bool perturb_and_run(const Options& o, const std::string& name, Mesh& m,
+                     std::vector<std::pair<std::size_t, std::size_t>>& gt, Pipeline_result& r)
+{
+  if(!perturb(o, m, gt))
+  {
+    std::cout << name << ": seeds 11-20 all cut holes that pinch a vertex or cut off a part, skipped\n";
+    return false;
+  }
+  try { r = run_pipeline(m, o); }
+  catch(const IRS::Input_error& e)
+  {
+    std::cout << name << ": " << e.what() << ", skipped\n";
+    return false;
+  }
   return true;
 }
 
@@ -550,10 +564,8 @@ Faust_means run_faust(const Options& o)
     for(std::size_t k = 0; k < x.size(); ++k)
       if(x[k] >= 1 && y[k] >= 1 && std::size_t(x[k]) <= num_vertices(m) && std::size_t(y[k]) <= num_vertices(m))
         gt.emplace_back(std::size_t(x[k] - 1), std::size_t(y[k] - 1)); // 1-based
-    if(!perturb(o, m, gt)) { std::cout << name << ": seeds 11-20 all cut holes that pinch a vertex or cut off a part, skipped\n"; continue; }
     Pipeline_result r;
-    try { r = run_pipeline(m, o); }
-    catch(const IRS::Input_error& e) { std::cout << name << ": " << e.what() << ", skipped\n"; continue; }
+    if(!perturb_and_run(o, name, m, gt, r)) continue;
     const Metrics e = evaluate(m, gt, r);
     print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
     write_outputs(o, name, r);
@@ -666,10 +678,8 @@ void run_scape(const Options& o)
       if(to_mended[std::size_t(a)] < 0 || to_mended[std::size_t(b)] < 0) continue;
       gt.emplace_back(std::size_t(to_mended[std::size_t(a)]), std::size_t(to_mended[std::size_t(b)]));
     }
-    if(!perturb(o, m, gt)) { std::cout << name << ": seeds 11-20 all cut holes that pinch a vertex or cut off a part, skipped\n"; continue; }
     Pipeline_result r;
-    try { r = run_pipeline(m, o); }
-    catch(const IRS::Input_error& e) { std::cout << name << ": " << e.what() << ", skipped\n"; continue; }
+    if(!perturb_and_run(o, name, m, gt, r)) continue;
     const Metrics e = evaluate(m, gt, r);
     print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
     if(!o.write.empty())

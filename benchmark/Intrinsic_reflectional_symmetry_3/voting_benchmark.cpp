@@ -112,13 +112,6 @@ Pairs similar_pairs(const Mesh& m, const IRS::Geodesic_distance_matrix& D, const
   return pairs;
 }
 
-double mean_edge(const Mesh& m)
-{
-  double s = 0.;
-  for(auto e : m.edges()) s += std::sqrt(CGAL::squared_distance(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1))));
-  return s / double(m.number_of_edges());
-}
-
 // ---------------------------------------------------------------- scaling
 
 void scaling(const std::string& path, const std::vector<std::size_t>& sample_counts)
@@ -355,7 +348,7 @@ double relative_l2(const std::vector<double>& tau, const std::vector<double>& ta
 // measures the transform, not a new sampling. Fig. 10-11 of the paper.
 void robustness(const std::string& name, const Mesh& m, std::size_t n)
 {
-  const double e = mean_edge(m);
+  const double e = IRS::internal::mean_edge_length(m);
   const std::vector<std::size_t> samples =
     IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
   std::size_t similar = 0;
@@ -651,7 +644,7 @@ void ridge_study(const std::vector<std::string>& dirs, const std::string& faust)
       }
       if(err < best) { best = err; normal = nk; }
     }
-    const double e = mean_edge(m);
+    const double e = IRS::internal::mean_edge_length(m);
     std::vector<char> on(P.size(), 0);
     for(std::size_t i = 0; i < P.size(); ++i) on[i] = std::abs((P[i] - c).dot(normal)) <= e;
     ridge_row(m, "camel", {on}, {"PCA plane"}, 1000, floors);

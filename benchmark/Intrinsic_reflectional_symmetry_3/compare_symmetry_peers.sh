@@ -6,15 +6,21 @@
 # (eval_symmetry.py, protocol of Kim et al. 2010). Also a cross-check of our own
 # C++ metric. On SCAPE every method runs on the mesh our benchmark writes (its
 # pinched vertex split by repair_input()), with the ground truth written with it.
-#   bash compare_symmetry_peers.sh BUILD_DIR [SHARED_DIR] [OUT_DIR]
+#   bash compare_symmetry_peers.sh BUILD_DIR [SHARED_DIR] [OUT_DIR] [BENCHMARK_OPTION...]
 # SHARED_DIR defaults to ../shared next to the repository; each collection is
-# skipped cleanly if absent.
+# skipped cleanly if absent, or when the options say --no-faust or --no-scape.
+# The options go to symmetry_map_benchmark (--samples, --seed, --tries, ...).
+# With --noise or --holes every method runs on the perturbed mesh the benchmark
+# writes, with the ground truth carried over to it (robustness side by side).
 set -euo pipefail
 py=${PYTHON:-/usr/bin/python3} # the tools need Debian's numpy and scipy
 here=$(cd "$(dirname "$0")" && pwd)
-build=$(cd "${1:?usage: compare_symmetry_peers.sh BUILD_DIR [SHARED_DIR] [OUT_DIR]}" && pwd)
+build=$(cd "${1:?usage: compare_symmetry_peers.sh BUILD_DIR [SHARED_DIR] [OUT_DIR] [BENCHMARK_OPTION...]}" && pwd)
 shared=${2:-$here/../../../shared}
 out=${3:-$(mktemp -d)}
+shift $(( $# < 3 ? $# : 3 ))
+options=("$@")
+has_option() { local a; for a in "${options[@]}"; do [ "$a" = "$1" ] && return 0; done; return 1; }
 tools=$shared/tools
 bench="$build/benchmark/Intrinsic_reflectional_symmetry_3/symmetry_map_benchmark"
 if [ ! -f "$tools/eval_symmetry.py" ]; then
@@ -54,20 +60,28 @@ means() {
 
 mkdir -p "$out"
 faust=$shared/data/faust_5k/faust
-if [ -d "$faust" ]; then
+if has_option --no-faust; then
+  echo "FAUST: --no-faust, skipped"
+elif [ -d "$faust" ]; then
   echo "FAUST ($faust)"
-  "$bench" "$shared/data" --no-scape --write "$out" > "$out/ours_cpp.txt"
-  side_by_side "$faust" "$faust/corres" "$out"
+  "$bench" "$shared/data" --no-scape "${options[@]}" --write "$out" > "$out/ours_cpp.txt"
+  if has_option --noise || has_option --holes; then
+    side_by_side "$out" "$out" "$out" # the perturbed meshes and their ground truth
+  else
+    side_by_side "$faust" "$faust/corres" "$out"
+  fi
   means "$out/table.txt" 1
 else
   echo "FAUST: $faust absent, skipped"
 fi
 
 scape=$shared/data/kim_bim_benchmark/scape
-if [ -d "$scape/meshes" ]; then
+if has_option --no-scape; then
+  echo; echo "SCAPE: --no-scape, skipped"
+elif [ -d "$scape/meshes" ]; then
   echo; echo "SCAPE ($scape, sparse ground truth: 44 checks per mesh)"
   mkdir -p "$out/scape"
-  "$bench" "$shared/data" --no-faust --write "$out/scape" > "$out/scape/ours_cpp.txt"
+  "$bench" "$shared/data" --no-faust "${options[@]}" --write "$out/scape" > "$out/scape/ours_cpp.txt"
   side_by_side "$out/scape" "$out/scape" "$out/scape"
   means "$out/scape/table.txt" ""
 else

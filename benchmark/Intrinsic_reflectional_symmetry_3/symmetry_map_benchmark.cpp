@@ -70,7 +70,8 @@
 //             NAME.curves (one curve per line) there, the input formats of
 //             eval_symmetry.py (for SCAPE: of the mended mesh, written as NAME.off);
 //             with several seeds, in DIR/seed_S; with --noise or --holes, the
-//             perturbed mesh too, as NAME.off (the map's indices are its own)
+//             perturbed mesh too, as NAME.off (the map's indices are its own),
+//             with its ground truth as NAME.vts and NAME.sym.vts, as for SCAPE
 //   LEVEL, H  the robustness study of the map (paper Fig. 10-11, the
 //             perturbations of voting_benchmark --robustness): every shape is
 //             first given Gaussian vertex noise of mean displacement LEVEL mean
@@ -421,6 +422,21 @@ void write_outputs(const Options& o, const std::string& name, const Pipeline_res
   }
 }
 
+// the mesh the map was computed on, as NAME.off, and its ground truth, as
+// NAME.vts and NAME.sym.vts (1-based), so that the peers and eval_symmetry.py
+// run on the same mesh with the same checks (SCAPE's mended mesh, a perturbed
+// copy)
+void write_mesh_and_ground_truth(const Options& o, const std::string& name, const Mesh& m,
+                                 const std::vector<std::pair<std::size_t, std::size_t>>& gt)
+{
+  if(o.write.empty()) return;
+  fs::create_directories(o.write);
+  CGAL::IO::write_polygon_mesh((fs::path(o.write) / (name + ".off")).string(), m,
+                               CGAL::parameters::stream_precision(17));
+  std::ofstream fx(fs::path(o.write) / (name + ".vts")), fy(fs::path(o.write) / (name + ".sym.vts"));
+  for(const auto& xy : gt) { fx << xy.first + 1 << '\n'; fy << xy.second + 1 << '\n'; }
+}
+
 void print_header()
 {
   std::cout << std::left << std::setw(12) << "shape" << std::right << std::setw(7) << "V" << std::setw(8) << "samples"
@@ -569,9 +585,7 @@ Faust_means run_faust(const Options& o)
     const Metrics e = evaluate(m, gt, r);
     print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
     write_outputs(o, name, r);
-    if(!o.write.empty() && o.perturbed())
-      CGAL::IO::write_polygon_mesh((fs::path(o.write) / (name + ".off")).string(), m,
-                                   CGAL::parameters::stream_precision(17));
+    if(o.perturbed()) write_mesh_and_ground_truth(o, name, m, gt);
     all.add(e, r);
     // tr_reg_000 .. 009: subject 0 in poses 0..9; tr_reg_010, 020, ...: pose 0 of subjects 1..9
     const int id = std::atoi(name.substr(name.size() - 3).c_str());
@@ -682,14 +696,8 @@ void run_scape(const Options& o)
     if(!perturb_and_run(o, name, m, gt, r)) continue;
     const Metrics e = evaluate(m, gt, r);
     print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
-    if(!o.write.empty())
-    {
-      write_outputs(o, name, r);
-      CGAL::IO::write_polygon_mesh((fs::path(o.write) / (name + ".off")).string(), m,
-                                   CGAL::parameters::stream_precision(17));
-      std::ofstream fx(fs::path(o.write) / (name + ".vts")), fy(fs::path(o.write) / (name + ".sym.vts"));
-      for(const auto& xy : gt) { fx << xy.first + 1 << '\n'; fy << xy.second + 1 << '\n'; }
-    }
+    write_outputs(o, name, r);
+    write_mesh_and_ground_truth(o, name, m, gt);
     all.add(e, r);
   }
   std::cout << '\n';

@@ -504,7 +504,7 @@ struct Faust_means
 // pairs of its vertices). False if the holes could not be cut.
 bool perturb(const Options& o, Mesh& m, std::vector<std::pair<std::size_t, std::size_t>>& gt)
 {
-  if(o.noise > 0.) m = IRS::internal::noisy_copy(m, o.noise, IRS::internal::mean_edge_length(m), 7u);
+  if(o.noise > 0.) m = IRS::internal::noisy_copy(m, o.noise, IRS::check_input(m).mean_edge_length, 7u);
   if(o.holes == 0) return true;
   Mesh holed;
   std::vector<std::ptrdiff_t> to_holed;

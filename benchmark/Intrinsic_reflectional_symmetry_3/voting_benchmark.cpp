@@ -28,6 +28,7 @@
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/check_input.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/perturbed_copies.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/reference_voting.h>
@@ -348,7 +349,7 @@ double relative_l2(const std::vector<double>& tau, const std::vector<double>& ta
 // measures the transform, not a new sampling. Fig. 10-11 of the paper.
 void robustness(const std::string& name, const Mesh& m, std::size_t n)
 {
-  const double e = IRS::internal::mean_edge_length(m);
+  const double e = IRS::check_input(m).mean_edge_length;
   const std::vector<std::size_t> samples =
     IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(n).random_seed(1u));
   std::size_t similar = 0;
@@ -644,7 +645,7 @@ void ridge_study(const std::vector<std::string>& dirs, const std::string& faust)
       }
       if(err < best) { best = err; normal = nk; }
     }
-    const double e = IRS::internal::mean_edge_length(m);
+    const double e = IRS::check_input(m).mean_edge_length;
     std::vector<char> on(P.size(), 0);
     for(std::size_t i = 0; i < P.size(); ++i) on[i] = std::abs((P[i] - c).dot(normal)) <= e;
     ridge_row(m, "camel", {on}, {"PCA plane"}, 1000, floors);

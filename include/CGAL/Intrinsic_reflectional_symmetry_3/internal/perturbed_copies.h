@@ -10,7 +10,6 @@
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Surface_mesh.h>
@@ -28,15 +27,6 @@
 namespace CGAL {
 namespace Intrinsic_reflectional_symmetry_3 {
 namespace internal {
-
-// The mean edge length of `m`, the unit of the noise level.
-template <typename Point>
-double mean_edge_length(const CGAL::Surface_mesh<Point>& m)
-{
-  double sum = 0.;
-  for(auto e : m.edges()) sum += CGAL::to_double(CGAL::Polygon_mesh_processing::edge_length(e, m));
-  return m.number_of_edges() ? sum / double(m.number_of_edges()) : 0.;
-}
 
 // A copy of `m` with Gaussian noise on every vertex: isotropic, per-axis
 // standard deviation s such that the mean displacement s * sqrt(8 / pi) is

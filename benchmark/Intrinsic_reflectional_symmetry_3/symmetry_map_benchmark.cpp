@@ -45,7 +45,7 @@
 //
 // usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--similarity EPS_SIM] [--distance EPS_DIS]
 //                               [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--write DIR]
-//                               [--threads T] [--noise LEVEL] [--holes H] [--no-scape] [--no-faust]
+//                               [--threads T] [--noise LEVEL] [--holes H] [--fill-holes] [--no-scape] [--no-faust]
 //   DATA_DIR  default ../shared/data (relative to the current directory);
 //             faust_5k/ and kim_bim_benchmark/ inside it, each skipped if absent
 //   N         samples per shape (default 1000)
@@ -80,12 +80,18 @@
 //             would pinch a vertex or cut off a part); the ground truth
 //             follows the vertices, and the checks of removed vertices are
 //             dropped (column checks)
+//   --fill-holes  the pipeline runs on prepare_mesh(fill_holes(true)) of the
+//             (perturbed) mesh, as irsym --fill-holes; the map and the curves
+//             are brought back to the mesh's own vertices and evaluated there,
+//             on the surface with its holes (fixed% and dist are those of the
+//             filled working mesh)
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/check_input.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/prepare_mesh.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/symmetric_map.h>
@@ -143,6 +149,7 @@ struct Options
   bool faust = true, scape = true;
   double noise = 0.;     // --noise: mean displacement, in mean edge lengths
   std::size_t holes = 0; // --holes: small holes cut (3 % of the faces)
+  bool fill_holes = false; // --fill-holes: the pipeline runs on the filled mesh
   bool perturbed() const { return noise > 0. || holes > 0; }
 };
 
@@ -251,6 +258,29 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
   kept.partner_without_spectral.assign(num_vertices(m), -1);
   for(Vertex v : vertices(m)) kept.partner_without_spectral[v.idx()] = get(partner, v);
   return kept;
+}
+
+// --fill-holes: run_pipeline() on the working mesh of prepare_mesh(m,
+// fill_holes(true)), its map and curves brought back to the vertices of `m`
+Pipeline_result run_pipeline_on_filled(const Mesh& m, const Options& o)
+{
+  const auto prepared = IRS::prepare_mesh(m, IRS::parameters::fill_holes(true));
+  Pipeline_result r = run_pipeline(prepared.working_mesh(), o);
+  const auto to_input = [&](const std::vector<std::ptrdiff_t>& working_partner) {
+    std::vector<std::ptrdiff_t> out(num_vertices(m), -1);
+    for(std::size_t i = 0; i < out.size(); ++i)
+    {
+      const std::ptrdiff_t w = working_partner[prepared.input_to_working_vertex(i)];
+      if(w >= 0) out[i] = std::ptrdiff_t(prepared.working_to_input_vertex(std::size_t(w)));
+    }
+    return out;
+  };
+  r.partner = to_input(r.partner);
+  r.partner_without_spectral = to_input(r.partner_without_spectral);
+  for(IRS::Irsa_curve& c : r.curves)
+    for(auto& polyline : c.polylines)
+      for(std::size_t& v : polyline) v = prepared.working_to_input_vertex(v);
+  return r;
 }
 
 struct Metrics
@@ -529,7 +559,11 @@ bool perturb_and_run(const Options& o, const std::string& name, Mesh& m,
     std::cout << name << ": seeds 11-20 all cut holes that pinch a vertex or cut off a part, skipped\n";
     return false;
   }
-  try { r = run_pipeline(m, o); }
+  try
+  {
+    if(o.fill_holes) r = run_pipeline_on_filled(m, o);
+    else r = run_pipeline(m, o);
+  }
   catch(const IRS::Input_error& e)
   {
     std::cout << name << ": " << e.what() << ", skipped\n";
@@ -538,12 +572,13 @@ bool perturb_and_run(const Options& o, const std::string& name, Mesh& m,
   return true;
 }
 
-// the perturbation's words for the tables' titles
+// the perturbation's words for the tables' titles (and --fill-holes)
 std::string perturbation(const Options& o)
 {
   std::ostringstream os;
   if(o.noise > 0.) os << ", vertex noise " << o.noise << " mean edge lengths";
   if(o.holes > 0) os << ", " << o.holes << " holes (3 % of the faces)";
+  if(o.fill_holes) os << ", holes filled first (prepare_mesh)";
   return os.str();
 }
 
@@ -742,12 +777,13 @@ int main(int argc, char** argv)
     else if(a == "--threads") o.threads = std::atoi(value().c_str());
     else if(a == "--noise") o.noise = std::max(0., std::atof(value().c_str()));
     else if(a == "--holes") o.holes = std::size_t(std::max(0L, std::atol(value().c_str())));
+    else if(a == "--fill-holes") o.fill_holes = true;
     else if(a == "--no-scape") o.scape = false;
     else if(a == "--no-faust") o.faust = false;
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--write DIR] "
-                   "[--threads T] [--similarity EPS_SIM] [--distance EPS_DIS] [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--noise LEVEL] [--holes H] [--no-scape] [--no-faust]\n";
+                   "[--threads T] [--similarity EPS_SIM] [--distance EPS_DIS] [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--noise LEVEL] [--holes H] [--fill-holes] [--no-scape] [--no-faust]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }

@@ -180,6 +180,21 @@ endif()
 if(EXISTS ${WORK_DIR}/holed/repaired.ply)
   message(FATAL_ERROR "repaired.ply written although the repair was not possible")
 endif()
+# --fill-holes: the hole is filled on the working mesh (one triangle again),
+# and every output still refers to the holed input
+run(0 ${WORK_DIR}/holed.off --fill-holes --samples 100 --out ${WORK_DIR}/filled)
+check_symmetry_outputs(${WORK_DIR}/filled ${nv} ${nf1})
+file(READ ${WORK_DIR}/filled/report.json report)
+string(JSON filled ERROR_VARIABLE jerr GET "${report}" results filled_holes)
+string(JSON preparation ERROR_VARIABLE jerr2 GET "${report}" results preparation)
+string(JSON working_faces ERROR_VARIABLE jerr3 GET "${report}" results working_faces)
+string(JSON fill_parameter ERROR_VARIABLE jerr4 GET "${report}" parameters fill_holes)
+if(jerr OR jerr2 OR jerr3 OR jerr4 OR NOT filled EQUAL 1 OR NOT preparation STREQUAL "holes filled"
+   OR NOT working_faces EQUAL nf OR NOT fill_parameter STREQUAL "ON")
+  message(FATAL_ERROR "--fill-holes: filled_holes '${filled}', preparation '${preparation}', working_faces "
+                      "'${working_faces}' (expected 1, 'holes filled', ${nf}), parameters.fill_holes '${fill_parameter}' "
+                      "${jerr} ${jerr2} ${jerr3} ${jerr4}")
+endif()
 # a one-face hole is small: no warning; a closed mesh: none either
 foreach(dir holed snowman)
   file(READ ${WORK_DIR}/${dir}/report.json report)

@@ -25,6 +25,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/prepare_mesh.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
@@ -753,9 +754,11 @@ TEST(Curves, MapIsRobustToNoiseAndSmallHoles)
     const IRS::Generated_shape<Mesh>& shape = c.shape;
     const double e = shape.mean_edge_length;
     const std::vector<Point> original = vertex_points(shape.mesh);
-    // each noise level, then 6 holes (-1)
+    // each noise level, then 6 holes (-1), then the same holes filled by
+    // prepare_mesh(fill_holes(true)) before the pipeline (-2)
     std::vector<double> perturbations = c.noise_levels;
     perturbations.push_back(-1.);
+    perturbations.push_back(-2.);
     for(const double level : perturbations)
     {
       Mesh m;
@@ -771,7 +774,8 @@ TEST(Curves, MapIsRobustToNoiseAndSmallHoles)
       else
       {
         ASSERT_TRUE(IRS::internal::holed_copy(shape.mesh, 0.03, 6, 11u, m, to_copy));
-        name << "6 holes, " << 100. * (1. - double(num_faces(m)) / double(num_faces(shape.mesh))) << " % of the faces";
+        name << "6 holes, " << 100. * (1. - double(num_faces(m)) / double(num_faces(shape.mesh))) << " % of the faces"
+             << (level == -2. ? ", filled first" : "");
       }
       SCOPED_TRACE(name.str());
       // the known symmetries and the unperturbed positions, by vertex of m
@@ -798,7 +802,29 @@ TEST(Curves, MapIsRobustToNoiseAndSmallHoles)
           if(to_copy[a] >= 0) symmetries[k].axis.push_back(std::size_t(to_copy[a]));
 
       Pipeline<Mesh> p;
-      p.run(m, 400, symmetries, {});
+      if(level == -2.)
+      {
+        // on the filled working mesh, its map, regions and curves brought back to the vertices of m
+        const auto prepared = IRS::prepare_mesh(m, IRS::parameters::fill_holes(true));
+        ASSERT_EQ(prepared.number_of_filled_holes(), 6u);
+        ASSERT_GT(num_vertices(prepared.working_mesh()), num_vertices(m));
+        p.run(prepared.working_mesh(), 400, symmetries, {});
+        std::vector<std::ptrdiff_t> partner(num_vertices(m), -1);
+        std::vector<int> region(num_vertices(m));
+        for(std::size_t i = 0; i < partner.size(); ++i)
+        {
+          const std::size_t w = prepared.input_to_working_vertex(i);
+          if(p.partner[w] >= 0) partner[i] = std::ptrdiff_t(prepared.working_to_input_vertex(std::size_t(p.partner[w])));
+          region[i] = p.vertex_region[w];
+        }
+        p.partner.swap(partner);
+        p.vertex_region.swap(region);
+        for(IRS::Irsa_curve& curve : p.curves)
+          for(auto& polyline : curve.polylines)
+            for(std::size_t& v : polyline) v = prepared.working_to_input_vertex(v);
+      }
+      else
+        p.run(m, 400, symmetries, {});
       ASSERT_FALSE(p.curves.empty());
       const std::size_t k = matching_symmetry(pts, p.curves[0], symmetries);
       const Map_quality q = map_quality(pts, p.partner, p.vertex_region, 0, symmetries[k], 2. * e, c.distortion);

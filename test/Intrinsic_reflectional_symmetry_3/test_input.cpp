@@ -9,6 +9,7 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
@@ -734,4 +735,107 @@ TEST(Preparation, ParametersAreValidated)
   IRS::read_mesh(path, pinched);
   expect_error([&] { IRS::prepare_mesh(pinched, IRS::parameters::isotropic_remeshing(true)); },
                IRS::Input_problem::non_manifold_vertex, {"vertex 3"});
+}
+
+// A sphere (Loop subdivision of an icosahedron, 642 vertices) with two round
+// holes, each the faces whose centroid lies within 0.45 of a pole: about the
+// 2-ring of the pole's vertex, deep enough (sagitta ~0.1) that a flat patch
+// would sit visibly inside the sphere.
+template <typename TM>
+TM sphere_with_two_holes()
+{
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  PMP::polygon_mesh_to_polygon_soup(sphere<TM>(3), points, polygons);
+  std::vector<std::vector<std::size_t> > kept;
+  for(const auto& p : polygons) {
+    const Point c = CGAL::centroid(points[p[0]], points[p[1]], points[p[2]]);
+    const Point north(0, 0, std::sqrt((c - CGAL::ORIGIN).squared_length())), south(0, 0, -north.z());
+    if(CGAL::squared_distance(c, north) > 0.45 * 0.45 && CGAL::squared_distance(c, south) > 0.45 * 0.45)
+      kept.push_back(p);
+  }
+  PMP::remove_isolated_points_in_polygon_soup(points, kept);
+  TM tm;
+  PMP::polygon_soup_to_polygon_mesh(points, kept, tm);
+  return tm;
+}
+
+// fill_holes(true) without remeshing: a closed working mesh whose first
+// vertices and faces are the input's, the patch faired onto the sphere, the
+// added vertices mapped to their nearest input vertex, the input untouched
+TYPED_TEST(Preparation, FillHolesClosesTheCopyAndKeepsTheInputIds)
+{
+  const TypeParam tm = sphere_with_two_holes<TypeParam>();
+  ASSERT_EQ(IRS::check_input(tm).number_of_boundary_cycles, 2u);
+  const std::vector<Point> before = points_of(tm);
+  const auto faces_before = faces_of(tm);
+  double radius = 0;
+  for(const Point& p : before) radius += std::sqrt((p - CGAL::ORIGIN).squared_length()) / double(before.size());
+
+  const auto prepared = IRS::prepare_mesh(tm, IRS::parameters::fill_holes(true));
+  EXPECT_EQ(prepared.number_of_filled_holes(), 2u);
+  EXPECT_FALSE(prepared.is_identity());
+  EXPECT_EQ(prepared.preparation(), IRS::Mesh_preparation::none);
+  const auto& w = prepared.working_mesh();
+  IRS::Input_report report;
+  ASSERT_NO_THROW(report = IRS::check_input(w));
+  EXPECT_EQ(report.number_of_boundary_cycles, 0u);
+  EXPECT_EQ(report.number_of_connected_components, 1u);
+  // the holes had ~30 input faces each: refinement adds interior vertices
+  ASSERT_GT(num_vertices(w), before.size() + 10);
+
+  const std::vector<Point> w_points = points_of(w);
+  for(std::size_t i = 0; i < before.size(); ++i) {
+    EXPECT_EQ(w_points[i], before[i]);
+    EXPECT_EQ(prepared.working_to_input_vertex(i), i);
+    EXPECT_EQ(prepared.input_to_working_vertex(i), i);
+  }
+  const auto w_faces = faces_of(w);
+  for(std::size_t j = 0; j < faces_before.size(); ++j) {
+    EXPECT_TRUE(same_cycle(w_faces[j], faces_before[j])) << "face " << j;
+    EXPECT_EQ(prepared.input_to_working_face(j), j);
+  }
+  double worst_off_sphere = 0;
+  for(std::size_t k = before.size(); k < w_points.size(); ++k) {
+    std::size_t nearest = 0;
+    for(std::size_t i = 1; i < before.size(); ++i)
+      if(CGAL::squared_distance(w_points[k], before[i]) < CGAL::squared_distance(w_points[k], before[nearest]))
+        nearest = i;
+    EXPECT_EQ(CGAL::squared_distance(w_points[k], before[prepared.working_to_input_vertex(k)]),
+              CGAL::squared_distance(w_points[k], before[nearest])) << "working vertex " << k;
+    worst_off_sphere = (std::max)(worst_off_sphere,
+                                  std::abs(std::sqrt((w_points[k] - CGAL::ORIGIN).squared_length()) - radius));
+  }
+  // faired: within 3 % of the radius, where the flat patch's centre is ~10 % inside
+  EXPECT_LT(worst_off_sphere, 0.03 * radius);
+  EXPECT_GT(PMP::area(w), PMP::area(tm));
+
+  std::vector<double> x;
+  for(const Point& p : w_points) x.push_back(p.x());
+  const std::vector<double> back = IRS::transfer_vertex_field_to_input(prepared, x);
+  for(std::size_t i = 0; i < before.size(); ++i) EXPECT_EQ(back[i], before[i].x());
+
+  EXPECT_EQ(points_of(tm), before);
+  EXPECT_EQ(faces_of(tm), faces_before);
+}
+
+// with a target: filled first, then remeshed to the target; a closed input is
+// left as it is (nothing to fill, still an exact copy)
+TEST(Preparation, FillHolesThenRemeshAndClosedInputUnchanged)
+{
+  const Mesh tm = sphere_with_two_holes<Mesh>();
+  const auto prepared = IRS::prepare_mesh(tm, IRS::parameters::fill_holes(true).target_number_of_vertices(1200));
+  EXPECT_EQ(prepared.number_of_filled_holes(), 2u);
+  EXPECT_EQ(prepared.preparation(), IRS::Mesh_preparation::isotropic_remeshing);
+  const IRS::Input_report report = IRS::check_input(prepared.working_mesh());
+  EXPECT_EQ(report.number_of_boundary_cycles, 0u);
+  EXPECT_GT(double(report.number_of_vertices), 0.9 * 1200);
+  EXPECT_LT(double(report.number_of_vertices), 1.1 * 1200);
+  EXPECT_EQ(prepared.number_of_input_vertices(), num_vertices(tm));
+
+  const Mesh closed = sphere<Mesh>(2);
+  const auto same = IRS::prepare_mesh(closed, IRS::parameters::fill_holes(true));
+  EXPECT_TRUE(same.is_identity());
+  EXPECT_EQ(same.number_of_filled_holes(), 0u);
+  EXPECT_EQ(num_vertices(same.working_mesh()), num_vertices(closed));
 }

@@ -90,7 +90,9 @@ public:
   /// what was done to the input to get the working mesh
   Mesh_preparation preparation() const { return preparation_; }
   /// whether the working mesh is an exact copy of the input and all maps are identities
-  bool is_identity() const { return preparation_ == Mesh_preparation::none; }
+  bool is_identity() const { return preparation_ == Mesh_preparation::none && number_of_filled_holes_ == 0; }
+  /// the number of boundary cycles filled before any remeshing (`fill_holes(true)`)
+  std::size_t number_of_filled_holes() const { return number_of_filled_holes_; }
   /// the target edge length given to isotropic remeshing (0 when not remeshed)
   double target_edge_length() const { return target_edge_length_; }
 
@@ -127,8 +129,9 @@ public:
   Prepared_mesh(Working_mesh&& working, Mesh_preparation preparation, double target_edge_length,
                 std::vector<std::size_t>&& working_to_input_vertex,
                 std::vector<Input_vertex_location>&& input_vertex_locations,
-                std::vector<std::size_t>&& input_face_to_working)
+                std::vector<std::size_t>&& input_face_to_working, std::size_t number_of_filled_holes = 0)
     : working_(std::move(working)), preparation_(preparation), target_edge_length_(target_edge_length),
+      number_of_filled_holes_(number_of_filled_holes),
       working_to_input_vertex_(std::move(working_to_input_vertex)),
       input_vertex_locations_(std::move(input_vertex_locations)),
       input_face_to_working_(std::move(input_face_to_working))
@@ -139,6 +142,7 @@ private:
   Working_mesh working_;
   Mesh_preparation preparation_ = Mesh_preparation::none;
   double target_edge_length_ = 0;
+  std::size_t number_of_filled_holes_ = 0;
   std::vector<std::size_t> working_to_input_vertex_;
   std::vector<Input_vertex_location> input_vertex_locations_;
   std::vector<std::size_t> input_face_to_working_;
@@ -166,9 +170,18 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// Makes the mesh the package works on: a `CGAL::Surface_mesh` copy of `tm`,
-/// optionally remeshed or decimated to a target vertex count, with the maps
-/// between its elements and those of `tm`. `tm` is never modified.
+/// optionally with its holes filled, optionally remeshed or decimated to a
+/// target vertex count, with the maps between its elements and those of `tm`.
+/// `tm` is never modified.
 ///
+/// - `fill_holes(true)`: first, every boundary cycle of the copy is filled by
+///   `PMP::triangulate_refine_and_fair_hole()` (a patch refined to the density of
+///   its rim and faired for tangent continuity), so that geodesics and the
+///   signatures see a closed surface. Without remeshing or decimation, input vertex `i`
+///   and face `j` are still working vertex `i` and face `j`, and the added vertices and
+///   faces come after them; the added vertices map to their nearest input vertex.
+///   Every boundary is filled, whatever its size: use it on holes, not on surfaces
+///   that are open by design.
 /// - Neither `target_number_of_vertices` nor `isotropic_remeshing` given, or a
 ///   target equal to the vertex count of `tm` without `isotropic_remeshing(true)`: the
 ///   working mesh is an exact copy (vertex `i` and face `j` of the working mesh are
@@ -208,6 +221,11 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 ///     \cgalParamDescription{whether to remesh isotropically (rather than decimate)}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`, `true` for a target above the vertex count of `tm`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{fill_holes}
+///     \cgalParamDescription{whether to fill every boundary cycle before remeshing or decimation}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{iterations of isotropic remeshing}
@@ -315,6 +333,8 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   }
   Working_mesh working;
   PMP::polygon_soup_to_polygon_mesh(points, triangles, working);
+  const std::size_t filled_holes = choose_parameter(get_parameter(np, internal_np::fill_holes), false)
+                                     ? internal::prepare_fill_holes(working) : 0;
 
   Mesh_preparation preparation = Mesh_preparation::none;
   double edge_length = 0;
@@ -405,12 +425,12 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
       for(std::size_t k = 0; k < 3; ++k) l.weights[k] = l.vertices[k] == i ? 1. : 0.;
     }
     for(std::size_t j = 0; j < nf; ++j) face_map[j] = j;
-    return Result(std::move(working), preparation, edge_length, std::move(working_to_input),
-                  std::move(locations), std::move(face_map));
   }
 
-  // working vertex -> nearest input vertex
-  {
+  // working vertex -> nearest input vertex, for the vertices that are not
+  // copies of input vertices (all of them after remeshing or decimation)
+  const std::size_t first_new_vertex = preparation == Mesh_preparation::none ? nv : 0;
+  if(first_new_vertex < nw) {
     typedef CGAL::Search_traits_3<GT> Base_traits;
     typedef typename CGAL::Pointer_property_map<Point_3>::const_type Point_pmap;
     typedef CGAL::Search_traits_adapter<std::size_t, Point_pmap, Base_traits> Traits;
@@ -421,14 +441,15 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
     Tree tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(nv),
               typename Tree::Splitter(), Traits(ppmap));
     const Distance distance(ppmap);
-    for(working_vertex w : vertices(working)) {
-      Neighbor_search search(tree, working.point(w), 1, 0, true, distance);
-      working_to_input[std::size_t(w)] = search.begin()->first;
+    for(std::size_t w = first_new_vertex; w < nw; ++w) {
+      Neighbor_search search(tree, working.point(working_vertex(static_cast<typename Working_mesh::size_type>(w))),
+                             1, 0, true, distance);
+      working_to_input[w] = search.begin()->first;
     }
   }
 
   // input vertex -> location on the working mesh; input face -> nearest working face
-  {
+  if(preparation != Mesh_preparation::none) {
     typedef CGAL::AABB_face_graph_triangle_primitive<Working_mesh> Primitive;
     typedef CGAL::AABB_traits<GT, Primitive> AABB_traits;
     typedef CGAL::AABB_tree<AABB_traits> Tree;
@@ -452,7 +473,7 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   }
 
   return Result(std::move(working), preparation, edge_length, std::move(working_to_input),
-                std::move(locations), std::move(face_map));
+                std::move(locations), std::move(face_map), filled_holes);
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref

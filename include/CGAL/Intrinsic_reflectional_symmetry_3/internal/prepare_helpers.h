@@ -9,11 +9,16 @@
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/errors.h>
 
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/iterator.h>
+
 #include <boost/graph/graph_traits.hpp>
 
 #include <cstddef>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Intrinsic_reflectional_symmetry_3 {
@@ -38,6 +43,22 @@ public:
 private:
   std::size_t number_of_vertices_;
 };
+
+// Fills every boundary cycle of `m` with CGAL's triangulate, refine and fair
+// (PMP::triangulate_refine_and_fair_hole()): new vertices and faces come after
+// the existing ones, which keep their indices. Returns the number of cycles
+// filled; a cycle whose fairing fails keeps its refined, unfaired patch.
+template <typename Mesh>
+std::size_t prepare_fill_holes(Mesh& m)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  std::vector<halfedge_descriptor> cycles;
+  PMP::extract_boundary_cycles(m, std::back_inserter(cycles));
+  for(halfedge_descriptor h : cycles)
+    PMP::triangulate_refine_and_fair_hole(m, h, CGAL::Emptyset_iterator(), CGAL::Emptyset_iterator());
+  return cycles.size();
+}
 
 inline void prepare_check_size(std::size_t given, std::size_t needed, const char* what)
 {

@@ -181,7 +181,8 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 ///   and face `j` are still working vertex `i` and face `j`, and the added vertices and
 ///   faces come after them; the added vertices map to their nearest input vertex.
 ///   Every boundary is filled, whatever its size: use it on holes, not on surfaces
-///   that are open by design.
+///   that are open by design. A boundary CGAL finds no triangulation for stays open;
+///   `Prepared_mesh::number_of_filled_holes()` counts the filled ones.
 /// - Neither `target_number_of_vertices` nor `isotropic_remeshing` given, or a
 ///   target equal to the vertex count of `tm` without `isotropic_remeshing(true)`: the
 ///   working mesh is an exact copy (vertex `i` and face `j` of the working mesh are

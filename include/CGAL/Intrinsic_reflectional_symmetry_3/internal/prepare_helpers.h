@@ -47,7 +47,8 @@ private:
 // Fills every boundary cycle of `m` with CGAL's triangulate, refine and fair
 // (PMP::triangulate_refine_and_fair_hole()): new vertices and faces come after
 // the existing ones, which keep their indices. Returns the number of cycles
-// filled; a cycle whose fairing fails keeps its refined, unfaired patch.
+// filled; a cycle whose fairing fails keeps its refined, unfaired patch, and
+// one CGAL finds no triangulation for stays open (and is not counted).
 template <typename Mesh>
 std::size_t prepare_fill_holes(Mesh& m)
 {
@@ -55,9 +56,12 @@ std::size_t prepare_fill_holes(Mesh& m)
   typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
   std::vector<halfedge_descriptor> cycles;
   PMP::extract_boundary_cycles(m, std::back_inserter(cycles));
-  for(halfedge_descriptor h : cycles)
+  std::size_t filled = 0;
+  for(halfedge_descriptor h : cycles) {
     PMP::triangulate_refine_and_fair_hole(m, h, CGAL::Emptyset_iterator(), CGAL::Emptyset_iterator());
-  return cycles.size();
+    filled += !is_border(h, m);
+  }
+  return filled;
 }
 
 inline void prepare_check_size(std::size_t given, std::size_t needed, const char* what)

@@ -538,8 +538,9 @@ bool perturb(const Options& o, Mesh& m, std::vector<std::pair<std::size_t, std::
   if(o.holes == 0) return true;
   Mesh holed;
   std::vector<std::ptrdiff_t> to_holed;
-  unsigned seed = 11u; // as voting_benchmark
-  if(!IRS::internal::holed_copy_from_seed(m, 0.03, o.holes, seed, 10u, holed, to_holed)) return false;
+  unsigned seed = IRS::internal::first_hole_seed; // as voting_benchmark
+  if(!IRS::internal::holed_copy_from_seed(m, 0.03, o.holes, seed, IRS::internal::number_of_hole_seeds, holed, to_holed))
+    return false;
   std::vector<std::pair<std::size_t, std::size_t>> kept;
   for(const auto& xy : gt)
     if(to_holed[xy.first] >= 0 && to_holed[xy.second] >= 0)
@@ -556,7 +557,9 @@ bool perturb_and_run(const Options& o, const std::string& name, Mesh& m,
 {
   if(!perturb(o, m, gt))
   {
-    std::cout << name << ": seeds 11-20 all cut holes that pinch a vertex or cut off a part, skipped\n";
+    std::cout << name << ": seeds " << IRS::internal::first_hole_seed << "-"
+              << IRS::internal::first_hole_seed + IRS::internal::number_of_hole_seeds - 1
+              << " all cut holes that pinch a vertex or cut off a part, skipped\n";
     return false;
   }
   try

@@ -374,11 +374,12 @@ void robustness(const std::string& name, const Mesh& m, std::size_t n)
     t.reset();
     Mesh holed;
     std::vector<std::ptrdiff_t> map;
-    unsigned seed = 11u;
-    if(!IRS::internal::holed_copy_from_seed(m, 0.03, holes, seed, 10u, holed, map))
+    unsigned seed = IRS::internal::first_hole_seed;
+    if(!IRS::internal::holed_copy_from_seed(m, 0.03, holes, seed, IRS::internal::number_of_hole_seeds, holed, map))
     {
-      std::cout << "| " << name << " | " << holes << " holes | (seeds 11-20 pinch a vertex or cut off a part) | | | |"
-                << std::endl;
+      std::cout << "| " << name << " | " << holes << " holes | (seeds " << IRS::internal::first_hole_seed << "-"
+                << IRS::internal::first_hole_seed + IRS::internal::number_of_hole_seeds - 1
+                << " pinch a vertex or cut off a part) | | | |" << std::endl;
       continue;
     }
     std::vector<std::size_t> kept;
@@ -387,7 +388,7 @@ void robustness(const std::string& name, const Mesh& m, std::size_t n)
     const std::vector<double> tau2 = irsa_tau(holed, kept, similar);
     std::cout << "| " << name << " | " << holes << " holes, " << std::setprecision(2)
               << 100. * double(num_faces(m) - num_faces(holed)) / double(num_faces(m)) << " % faces removed"
-              << (seed != 11u ? ", seed " + std::to_string(seed) : std::string()) << " | "
+              << (seed != IRS::internal::first_hole_seed ? ", seed " + std::to_string(seed) : std::string()) << " | "
               << num_vertices(holed) << " / " << kept.size() << " | " << similar << " | " << std::setprecision(3)
               << relative_l2(tau, tau2, map) << " | " << std::setprecision(1) << t.time() << " |" << std::endl;
   }

@@ -138,6 +138,10 @@ bool holed_copy(const CGAL::Surface_mesh<Point>& m, double fraction, std::size_t
          CGAL::Polygon_mesh_processing::connected_components(m, component_in);
 }
 
+// The robustness studies' holes: the first seed tried, and how many seeds
+// holed_copy_from_seed() tries from it.
+constexpr unsigned int first_hole_seed = 11u, number_of_hole_seeds = 10u;
+
 // holed_copy() with `seed`, or else with the next of up to `seeds` seeds
 // (those holes would pinch a vertex or cut off a part); `seed` receives the
 // seed used. False if none succeeds.

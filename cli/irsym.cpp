@@ -314,10 +314,7 @@ void write_symmetry_outputs(const Mesh& input, const Prepared& prepared, const s
     std::ofstream s(out / "regions.txt");
     for(long r : region_in) s << r << '\n';
     std::ofstream m(out / "symmetric_map.txt");
-    for(std::size_t i = 0; i < prepared.number_of_input_vertices(); ++i) {
-      const long w = partner[prepared.input_to_working_vertex(i)];
-      m << (w < 0 ? -1L : long(prepared.working_to_input_vertex(std::size_t(w)))) << '\n';
-    }
+    for(std::ptrdiff_t p : IRS::transfer_vertex_map_to_input(prepared, partner)) m << p << '\n';
   }
   for(const char* f : {"curves.txt", "curves.polylines.txt", "regions.txt", "symmetric_map.txt"})
     files.push(irsym::Json::object().add("file", f));

@@ -266,17 +266,8 @@ Pipeline_result run_pipeline_on_filled(const Mesh& m, const Options& o)
 {
   const auto prepared = IRS::prepare_mesh(m, IRS::parameters::fill_holes(true));
   Pipeline_result r = run_pipeline(prepared.working_mesh(), o);
-  const auto to_input = [&](const std::vector<std::ptrdiff_t>& working_partner) {
-    std::vector<std::ptrdiff_t> out(num_vertices(m), -1);
-    for(std::size_t i = 0; i < out.size(); ++i)
-    {
-      const std::ptrdiff_t w = working_partner[prepared.input_to_working_vertex(i)];
-      if(w >= 0) out[i] = std::ptrdiff_t(prepared.working_to_input_vertex(std::size_t(w)));
-    }
-    return out;
-  };
-  r.partner = to_input(r.partner);
-  r.partner_without_spectral = to_input(r.partner_without_spectral);
+  r.partner = IRS::transfer_vertex_map_to_input(prepared, r.partner);
+  r.partner_without_spectral = IRS::transfer_vertex_map_to_input(prepared, r.partner_without_spectral);
   for(IRS::Irsa_curve& c : r.curves)
     for(auto& polyline : c.polylines)
       for(std::size_t& v : polyline) v = prepared.working_to_input_vertex(v);

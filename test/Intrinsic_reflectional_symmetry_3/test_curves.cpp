@@ -809,16 +809,8 @@ TEST(Curves, MapIsRobustToNoiseAndSmallHoles)
         ASSERT_EQ(prepared.number_of_filled_holes(), 6u);
         ASSERT_GT(num_vertices(prepared.working_mesh()), num_vertices(m));
         p.run(prepared.working_mesh(), 400, symmetries, {});
-        std::vector<std::ptrdiff_t> partner(num_vertices(m), -1);
-        std::vector<int> region(num_vertices(m));
-        for(std::size_t i = 0; i < partner.size(); ++i)
-        {
-          const std::size_t w = prepared.input_to_working_vertex(i);
-          if(p.partner[w] >= 0) partner[i] = std::ptrdiff_t(prepared.working_to_input_vertex(std::size_t(p.partner[w])));
-          region[i] = p.vertex_region[w];
-        }
-        p.partner.swap(partner);
-        p.vertex_region.swap(region);
+        p.partner = IRS::transfer_vertex_map_to_input(prepared, p.partner);
+        p.vertex_region = IRS::transfer_vertex_labels_to_input(prepared, p.vertex_region);
         for(IRS::Irsa_curve& curve : p.curves)
           for(auto& polyline : curve.polylines)
             for(std::size_t& v : polyline) v = prepared.working_to_input_vertex(v);

@@ -815,6 +815,24 @@ TYPED_TEST(Preparation, FillHolesClosesTheCopyAndKeepsTheInputIds)
   const std::vector<double> back = IRS::transfer_vertex_field_to_input(prepared, x);
   for(std::size_t i = 0; i < before.size(); ++i) EXPECT_EQ(back[i], before[i].x());
 
+  // a vertex map (each working vertex to the next, none for vertex 0) comes
+  // back with partners among the added vertices sent to their nearest input vertex
+  const std::size_t nw = w_points.size();
+  std::vector<long> next(nw);
+  for(std::size_t k = 0; k < nw; ++k) next[k] = k == 0 ? -1 : long((k + 1) % nw);
+  const std::vector<std::ptrdiff_t> partner = IRS::transfer_vertex_map_to_input(prepared, next);
+  ASSERT_EQ(partner.size(), before.size());
+  EXPECT_EQ(partner[0], -1);
+  EXPECT_EQ(partner[before.size() - 1], std::ptrdiff_t(prepared.working_to_input_vertex(before.size())));
+  EXPECT_GE(partner[before.size() - 1], 0);
+  for(std::size_t i = 1; i + 1 < before.size(); ++i) EXPECT_EQ(partner[i], std::ptrdiff_t(i + 1));
+  next[5] = long(nw);
+  expect_error([&] { IRS::transfer_vertex_map_to_input(prepared, next); }, IRS::Input_problem::invalid_parameter,
+               {"partner " + std::to_string(nw), "not a working vertex"});
+  next.resize(before.size());
+  expect_error([&] { IRS::transfer_vertex_map_to_input(prepared, next); }, IRS::Input_problem::invalid_parameter,
+               {std::to_string(before.size()), std::to_string(nw)});
+
   EXPECT_EQ(points_of(tm), before);
   EXPECT_EQ(faces_of(tm), faces_before);
 }

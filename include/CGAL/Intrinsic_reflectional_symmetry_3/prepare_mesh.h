@@ -527,6 +527,36 @@ transfer_vertex_labels_to_input(const Prepared_mesh<GeomTraits>& prepared, const
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// Transfers a map from working vertices to working vertices (for example the
+/// partners of `symmetric_vertex_map()`, negative for none) to the input: input
+/// vertex `i` takes the partner of `prepared.input_to_working_vertex(i)`, as the
+/// input vertex nearest to it (`prepared.working_to_input_vertex()`), or -1.
+///
+/// \tparam WorkingPartners a random access range of signed integers, indexed by working vertex index
+/// \returns the partner of each input vertex, in input vertex index order
+/// \throws Input_error `invalid_parameter` if `working_partners` has fewer entries than working
+///   vertices, or if a partner is not a working vertex
+template <typename GeomTraits, typename WorkingPartners>
+std::vector<std::ptrdiff_t> transfer_vertex_map_to_input(const Prepared_mesh<GeomTraits>& prepared,
+                                                         const WorkingPartners& working_partners)
+{
+  internal::prepare_check_size(std::size_t(boost::size(working_partners)), prepared.number_of_working_vertices(),
+                               "working vertex partners");
+  std::vector<std::ptrdiff_t> out(prepared.number_of_input_vertices(), -1);
+  for(std::size_t i = 0; i < out.size(); ++i) {
+    const long long w = (long long)working_partners[prepared.input_to_working_vertex(i)];
+    if(w < 0) continue;
+    if(std::size_t(w) >= prepared.number_of_working_vertices()) {
+      std::ostringstream os;
+      os << "partner " << w << " is not a working vertex (" << prepared.number_of_working_vertices() << " of them)";
+      throw Input_error(Input_problem::invalid_parameter, os.str());
+    }
+    out[i] = std::ptrdiff_t(prepared.working_to_input_vertex(std::size_t(w)));
+  }
+  return out;
+}
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// Transfers per-face labels (any copyable type, for example segment ids) of
 /// the working mesh to the input's faces: each input face takes the label of
 /// the working face nearest to its centroid.

@@ -186,7 +186,8 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 /// - Neither `target_number_of_vertices` nor `isotropic_remeshing` given, or a
 ///   target equal to the vertex count of `tm` without `isotropic_remeshing(true)`: the
 ///   working mesh is an exact copy (vertex `i` and face `j` of the working mesh are
-///   vertex `i` and face `j` of the index maps of `tm`), and all maps are identities.
+///   vertex `i` and face `j` of the index maps of `tm`), and all maps are identities
+///   (with `fill_holes(true)`, for the input's elements; the patches come after them).
 /// - `isotropic_remeshing(true)`, or a target above the vertex count of `tm` (only
 ///   remeshing adds vertices; an explicit `isotropic_remeshing(false)` with such a target
 ///   throws): `PMP::isotropic_remeshing()` with the edge length

@@ -104,6 +104,9 @@ usage: irsym MESH --out DIR [options]
                        is filled, so not for surfaces open by design. Measured on FAUST and
                        SCAPE with 8 holes cut (symmetry_map_benchmark --holes 8 --fill-holes):
                        see the manual, "Filling the holes first"
+  --max-hole-length L  with --fill-holes, fill only the boundary cycles at most L long (in the
+                       mesh's units; the others stay open, report.json: holes_left_open),
+                       for a surface with an opening by design besides its holes
   --max-voting-pairs N at most N of the similar sample pairs vote for boundaries, drawn at
                        random with --seed (all of them still support); default: all. Where
                        the SDF is nearly uniform (flat or machined parts) most sample pairs
@@ -166,6 +169,7 @@ struct Options
   int threads = 0;
   long long target_vertices = 0, max_voting_pairs = 0; // 0: no cap
   double time_limit = 0.; // seconds, 0: none
+  double max_hole_length = std::numeric_limits<double>::infinity(); // --fill-holes bound, infinity: none
   bool remesh = false, repair = false, nested = false, fill_holes = false;
   std::string up = "+Z";
 };
@@ -218,6 +222,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--time-limit") o.time_limit = parse_positive(a, value());
     else if(a == "--remesh") o.remesh = true;
     else if(a == "--fill-holes") o.fill_holes = true;
+    else if(a == "--max-hole-length") o.max_hole_length = parse_positive(a, value());
     else if(a == "--repair") o.repair = true;
     else if(a == "--nested-symmetries") o.nested = true;
     else if(a == "--up") {
@@ -236,6 +241,8 @@ Options parse_options(int argc, char** argv)
   }
   if(o.out_dir.empty()) throw Usage_error("--out DIR is required");
   if(o.mesh_path.empty() == o.shape.empty()) throw Usage_error("give either MESH or --shape NAME");
+  if(std::isfinite(o.max_hole_length) && !o.fill_holes)
+    throw Usage_error("--max-hole-length bounds the holes --fill-holes fills: give --fill-holes too");
   return o;
 }
 
@@ -526,15 +533,16 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     std::ostringstream os;
     os << "the mesh has a boundary (hole or open border) of length " << stats.longest_boundary_cycle_length
        << ", more than the square root of its area (" << std::sqrt(stats.area) << "): the method expects a closed mesh with small holes, "
-       << (opt.fill_holes ? "and --fill-holes covers a large missing part with an invented patch that the symmetry takes for surface"
-                          : "and large missing parts distort the geodesics");
+       << (opt.fill_holes && stats.longest_boundary_cycle_length <= opt.max_hole_length
+             ? "and --fill-holes covers a large missing part with an invented patch that the symmetry takes for surface"
+             : "and large missing parts distort the geodesics");
     std::cerr << "irsym: warning: " << os.str() << '\n';
     warnings.push(os.str());
   }
 
   log.start("prepare");
   // without --remesh, prepare_mesh() decimates to a lower target and remeshes to a higher one
-  const auto fill = IRS::parameters::fill_holes(opt.fill_holes);
+  const auto fill = IRS::parameters::fill_holes(opt.fill_holes).maximum_hole_boundary_length(opt.max_hole_length);
   const auto prepared = opt.target_vertices <= 0 ? IRS::prepare_mesh(input, fill)
     : opt.remesh ? IRS::prepare_mesh(input, fill.target_number_of_vertices(std::size_t(opt.target_vertices))
                                               .isotropic_remeshing(true))
@@ -660,6 +668,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
      .add("working_faces", std::size_t(num_faces(work)))
      .add("preparation", preparation_words(prepared))
      .add("filled_holes", prepared.number_of_filled_holes())
+     .add("holes_left_open", prepared.number_of_holes_left_open())
      .add("samples", samples.size())
      .add("largest_geodesic_distance", D.largest_finite_distance())
      .add("sample_pairs", samples.size() * (samples.size() - 1) / 2)
@@ -727,7 +736,8 @@ int main(int argc, char** argv)
     params.add("mesh", opt.mesh_path).add("shape", opt.shape)
           .add("samples", opt.samples ? double(*opt.samples) : std::numeric_limits<double>::quiet_NaN())
           .add("seed", opt.seed).add("tries", opt.tries).add("geodesics", opt.geodesics).add("threads", threads)
-          .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh).add("fill_holes", opt.fill_holes).add("up", opt.up)
+          .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh).add("fill_holes", opt.fill_holes)
+          .add("max_hole_length", opt.max_hole_length).add("up", opt.up)
           .add("repair", opt.repair).add("nested_symmetries", opt.nested).add("time_limit", opt.time_limit)
           .add("max_voting_pairs", opt.max_voting_pairs > 0 ? double(opt.max_voting_pairs)
                                                             : std::numeric_limits<double>::quiet_NaN());

@@ -195,6 +195,20 @@ if(jerr OR jerr2 OR jerr3 OR jerr4 OR NOT filled EQUAL 1 OR NOT preparation STRE
                       "'${working_faces}' (expected 1, 'holes filled', ${nf}), parameters.fill_holes '${fill_parameter}' "
                       "${jerr} ${jerr2} ${jerr3} ${jerr4}")
 endif()
+# --max-hole-length below the hole's rim: nothing filled, the hole left open
+run(0 ${WORK_DIR}/holed.off --fill-holes --max-hole-length 1e-6 --samples 100 --out ${WORK_DIR}/bounded)
+check_symmetry_outputs(${WORK_DIR}/bounded ${nv} ${nf1})
+file(READ ${WORK_DIR}/bounded/report.json report)
+string(JSON filled ERROR_VARIABLE jerr GET "${report}" results filled_holes)
+string(JSON left_open ERROR_VARIABLE jerr2 GET "${report}" results holes_left_open)
+string(JSON working_faces ERROR_VARIABLE jerr3 GET "${report}" results working_faces)
+string(JSON bound ERROR_VARIABLE jerr4 GET "${report}" parameters max_hole_length)
+if(jerr OR jerr2 OR jerr3 OR jerr4 OR NOT filled EQUAL 0 OR NOT left_open EQUAL 1
+   OR NOT working_faces EQUAL nf1 OR NOT bound EQUAL 1e-6)
+  message(FATAL_ERROR "--max-hole-length 1e-6: filled_holes '${filled}', holes_left_open '${left_open}', "
+                      "working_faces '${working_faces}' (expected 0, 1, ${nf1}), parameters.max_hole_length "
+                      "'${bound}' ${jerr} ${jerr2} ${jerr3} ${jerr4}")
+endif()
 # a one-face hole is small: no warning; a closed mesh: none either
 foreach(dir holed snowman)
   file(READ ${WORK_DIR}/${dir}/report.json report)
@@ -296,5 +310,7 @@ run(1 --shape snowman --out ${WORK_DIR}/x --max-voting-pairs 0)
 run(1 --shape snowman --out ${WORK_DIR}/x --tries 0)
 run(1 --shape snowman --out ${WORK_DIR}/x --tries 101)
 run(1 --shape snowman --out ${WORK_DIR}/x --seed 99999999999)
+run(1 --shape snowman --out ${WORK_DIR}/x --max-hole-length 0.5)
+run(1 --shape snowman --out ${WORK_DIR}/x --fill-holes --max-hole-length -1)
 run(0 --help)
 message(STATUS "irsym end-to-end test passed")

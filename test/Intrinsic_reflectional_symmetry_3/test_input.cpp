@@ -7,6 +7,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -738,11 +739,11 @@ TEST(Preparation, ParametersAreValidated)
 }
 
 // A sphere (Loop subdivision of an icosahedron, 642 vertices) with two round
-// holes, each the faces whose centroid lies within 0.45 of a pole: about the
-// 2-ring of the pole's vertex, deep enough (sagitta ~0.1) that a flat patch
-// would sit visibly inside the sphere.
+// holes, the faces whose centroid lies within `north` and `south` of the poles:
+// at 0.45, about the 2-ring of the pole's vertex, deep enough (sagitta ~0.1)
+// that a flat patch would sit visibly inside the sphere.
 template <typename TM>
-TM sphere_with_two_holes()
+TM sphere_with_two_holes(double north_radius = 0.45, double south_radius = 0.45)
 {
   std::vector<Point> points;
   std::vector<std::vector<std::size_t> > polygons;
@@ -751,7 +752,8 @@ TM sphere_with_two_holes()
   for(const auto& p : polygons) {
     const Point c = CGAL::centroid(points[p[0]], points[p[1]], points[p[2]]);
     const Point north(0, 0, std::sqrt((c - CGAL::ORIGIN).squared_length())), south(0, 0, -north.z());
-    if(CGAL::squared_distance(c, north) > 0.45 * 0.45 && CGAL::squared_distance(c, south) > 0.45 * 0.45)
+    if(CGAL::squared_distance(c, north) > north_radius * north_radius &&
+       CGAL::squared_distance(c, south) > south_radius * south_radius)
       kept.push_back(p);
   }
   PMP::remove_isolated_points_in_polygon_soup(points, kept);
@@ -835,6 +837,56 @@ TYPED_TEST(Preparation, FillHolesClosesTheCopyAndKeepsTheInputIds)
 
   EXPECT_EQ(points_of(tm), before);
   EXPECT_EQ(faces_of(tm), faces_before);
+}
+
+// maximum_hole_boundary_length: of two holes, the shorter is filled and the
+// longer left as it was; a bound that is not positive, or one given without
+// fill_holes(true), is an error
+TEST(Preparation, FillHolesUpToAMaximumBoundaryLength)
+{
+  const Mesh tm = sphere_with_two_holes<Mesh>(0.45, 0.9);
+  const std::vector<Point> before = points_of(tm);
+  std::vector<Mesh::Halfedge_index> cycles;
+  PMP::extract_boundary_cycles(tm, std::back_inserter(cycles));
+  ASSERT_EQ(cycles.size(), 2u);
+  const double a = PMP::face_border_length(cycles[0], tm), b = PMP::face_border_length(cycles[1], tm);
+  const double shorter = (std::min)(a, b), longer = (std::max)(a, b);
+  ASSERT_LT(shorter, 0.7 * longer);
+
+  const auto one = IRS::prepare_mesh(tm, IRS::parameters::fill_holes(true).maximum_hole_boundary_length(0.5 * (shorter + longer)));
+  EXPECT_EQ(one.number_of_filled_holes(), 1u);
+  EXPECT_EQ(one.number_of_holes_left_open(), 1u);
+  EXPECT_FALSE(one.is_identity());
+  const IRS::Input_report report = IRS::check_input(one.working_mesh());
+  EXPECT_EQ(report.number_of_boundary_cycles, 1u);
+  EXPECT_NEAR(report.longest_boundary_cycle_length, longer, 1e-9 * longer);
+  ASSERT_GT(num_vertices(one.working_mesh()), before.size());
+  const std::vector<Point> w_points = points_of(one.working_mesh());
+  for(std::size_t i = 0; i < before.size(); ++i) EXPECT_EQ(w_points[i], before[i]);
+
+  const auto both = IRS::prepare_mesh(tm, IRS::parameters::fill_holes(true).maximum_hole_boundary_length(1.01 * longer));
+  EXPECT_EQ(both.number_of_filled_holes(), 2u);
+  EXPECT_EQ(both.number_of_holes_left_open(), 0u);
+  EXPECT_EQ(IRS::check_input(both.working_mesh()).number_of_boundary_cycles, 0u);
+  const auto none = IRS::prepare_mesh(tm, IRS::parameters::fill_holes(true).maximum_hole_boundary_length(0.99 * shorter));
+  EXPECT_EQ(none.number_of_filled_holes(), 0u);
+  EXPECT_EQ(none.number_of_holes_left_open(), 2u);
+  EXPECT_TRUE(none.is_identity());
+  EXPECT_EQ(num_vertices(none.working_mesh()), before.size());
+
+  expect_error([&] { IRS::prepare_mesh(tm, IRS::parameters::fill_holes(true).maximum_hole_boundary_length(0.)); },
+               IRS::Input_problem::invalid_parameter, {"maximum_hole_boundary_length is 0", "positive"});
+  expect_error([&] {
+    IRS::prepare_mesh(tm, IRS::parameters::fill_holes(true).maximum_hole_boundary_length(std::nan("")));
+  }, IRS::Input_problem::invalid_parameter, {"maximum_hole_boundary_length", "positive"});
+  expect_error([&] { IRS::prepare_mesh(tm, IRS::parameters::maximum_hole_boundary_length(longer)); },
+               IRS::Input_problem::invalid_parameter, {"without fill_holes(true)"});
+  expect_error([&] { IRS::prepare_mesh(tm, IRS::parameters::fill_holes(false).maximum_hole_boundary_length(longer)); },
+               IRS::Input_problem::invalid_parameter, {"without fill_holes(true)"});
+  // infinity is no bound: accepted without filling (irsym passes it when no bound is given)
+  EXPECT_TRUE(IRS::prepare_mesh(tm, IRS::parameters::fill_holes(false).maximum_hole_boundary_length(
+                                      std::numeric_limits<double>::infinity())).is_identity());
+  EXPECT_EQ(points_of(tm), before);
 }
 
 // with a target: filled first, then remeshed to the target; a closed input is

@@ -34,6 +34,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <sstream>
 #include <type_traits>
 #include <utility>
@@ -93,6 +94,9 @@ public:
   bool is_identity() const { return preparation_ == Mesh_preparation::none && number_of_filled_holes_ == 0; }
   /// the number of boundary cycles filled before any remeshing (`fill_holes(true)`)
   std::size_t number_of_filled_holes() const { return number_of_filled_holes_; }
+  /// the number of boundary cycles `fill_holes(true)` left open: longer than
+  /// `maximum_hole_boundary_length`, or without a triangulation (0 without `fill_holes(true)`)
+  std::size_t number_of_holes_left_open() const { return number_of_holes_left_open_; }
   /// the target edge length given to isotropic remeshing (0 when not remeshed)
   double target_edge_length() const { return target_edge_length_; }
 
@@ -129,9 +133,10 @@ public:
   Prepared_mesh(Working_mesh&& working, Mesh_preparation preparation, double target_edge_length,
                 std::vector<std::size_t>&& working_to_input_vertex,
                 std::vector<Input_vertex_location>&& input_vertex_locations,
-                std::vector<std::size_t>&& input_face_to_working, std::size_t number_of_filled_holes = 0)
+                std::vector<std::size_t>&& input_face_to_working, std::size_t number_of_filled_holes = 0,
+                std::size_t number_of_holes_left_open = 0)
     : working_(std::move(working)), preparation_(preparation), target_edge_length_(target_edge_length),
-      number_of_filled_holes_(number_of_filled_holes),
+      number_of_filled_holes_(number_of_filled_holes), number_of_holes_left_open_(number_of_holes_left_open),
       working_to_input_vertex_(std::move(working_to_input_vertex)),
       input_vertex_locations_(std::move(input_vertex_locations)),
       input_face_to_working_(std::move(input_face_to_working))
@@ -142,7 +147,7 @@ private:
   Working_mesh working_;
   Mesh_preparation preparation_ = Mesh_preparation::none;
   double target_edge_length_ = 0;
-  std::size_t number_of_filled_holes_ = 0;
+  std::size_t number_of_filled_holes_ = 0, number_of_holes_left_open_ = 0;
   std::vector<std::size_t> working_to_input_vertex_;
   std::vector<Input_vertex_location> input_vertex_locations_;
   std::vector<std::size_t> input_face_to_working_;
@@ -180,9 +185,11 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 ///   signatures see a closed surface. Without remeshing or decimation, input vertex `i`
 ///   and face `j` are still working vertex `i` and face `j`, and the added vertices and
 ///   faces come after them; the added vertices map to their nearest input vertex.
-///   Every boundary is filled, whatever its size: use it on holes, not on surfaces
-///   that are open by design. A boundary CGAL finds no triangulation for stays open;
-///   `Prepared_mesh::number_of_filled_holes()` counts the filled ones.
+///   Every boundary is filled, whatever its size, unless `maximum_hole_boundary_length`
+///   bounds the length of the cycles to fill: give it where the surface has an opening by
+///   design (the base of a scanned bust) besides its holes. A boundary CGAL finds no
+///   triangulation for stays open too; `Prepared_mesh::number_of_filled_holes()` and
+///   `Prepared_mesh::number_of_holes_left_open()` count both kinds.
 /// - Neither `target_number_of_vertices` nor `isotropic_remeshing` given, or a
 ///   target equal to the vertex count of `tm` without `isotropic_remeshing(true)`: the
 ///   working mesh is an exact copy (vertex `i` and face `j` of the working mesh are
@@ -229,6 +236,13 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_hole_boundary_length}
+///     \cgalParamDescription{with `fill_holes(true)`, only the boundary cycles at most this long
+///       (the sum of their edge lengths, as `PMP::face_border_length()` measures it) are filled}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{no bound: every cycle is filled}
+///     \cgalParamExtra{must be positive; a finite bound needs `fill_holes(true)` (infinity: no bound)}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{iterations of isotropic remeshing}
 ///     \cgalParamType{`unsigned int`}
@@ -264,7 +278,8 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 /// \throws Input_error any problem of `check_input()` on `tm` (`too_many_samples` against
 ///   the working mesh); `invalid_parameter` for a target below 4 or above
 ///   `maximum_target_number_of_vertices`, or for a target above the vertex count of `tm`
-///   with `isotropic_remeshing(false)`.
+///   with `isotropic_remeshing(false)`; `invalid_parameter` for a `maximum_hole_boundary_length`
+///   that is not a positive number, or a finite one without `fill_holes(true)`.
 template <typename TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Prepared_mesh<typename GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type>
 prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::default_values())
@@ -321,6 +336,17 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
     }
   }
   const unsigned int iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 3u);
+  const double maximum_hole_boundary_length = choose_parameter(
+    get_parameter(np, internal_np::maximum_hole_boundary_length), std::numeric_limits<double>::infinity());
+  if(!(maximum_hole_boundary_length > 0)) {
+    std::ostringstream os;
+    os << "maximum_hole_boundary_length is " << maximum_hole_boundary_length << ", it must be positive";
+    throw Input_error(Input_problem::invalid_parameter, os.str());
+  }
+  // a bound on the holes to fill means nothing without filling: say so rather than ignore it
+  if(std::isfinite(maximum_hole_boundary_length) && !choose_parameter(get_parameter(np, internal_np::fill_holes), false))
+    throw Input_error(Input_problem::invalid_parameter,
+                      "maximum_hole_boundary_length is given without fill_holes(true): no hole would be filled");
 
   // the exact copy: vertices in vertex-index order, faces in face-index order
   std::vector<Point_3> points(nv);
@@ -335,8 +361,9 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   }
   Working_mesh working;
   PMP::polygon_soup_to_polygon_mesh(points, triangles, working);
-  const std::size_t filled_holes = choose_parameter(get_parameter(np, internal_np::fill_holes), false)
-                                     ? internal::prepare_fill_holes(working) : 0;
+  const bool fill_holes = choose_parameter(get_parameter(np, internal_np::fill_holes), false);
+  const internal::Prepare_fill_outcome holes = fill_holes
+    ? internal::prepare_fill_holes(working, maximum_hole_boundary_length) : internal::Prepare_fill_outcome();
 
   Mesh_preparation preparation = Mesh_preparation::none;
   double edge_length = 0;
@@ -475,7 +502,7 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   }
 
   return Result(std::move(working), preparation, edge_length, std::move(working_to_input),
-                std::move(locations), std::move(face_map), filled_holes);
+                std::move(locations), std::move(face_map), holes.filled, holes.left_open);
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref

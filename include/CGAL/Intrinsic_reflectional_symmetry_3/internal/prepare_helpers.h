@@ -10,6 +10,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/errors.h>
 
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/iterator.h>
 
@@ -44,24 +45,31 @@ private:
   std::size_t number_of_vertices_;
 };
 
-// Fills every boundary cycle of `m` with CGAL's triangulate, refine and fair
-// (PMP::triangulate_refine_and_fair_hole()): new vertices and faces come after
-// the existing ones, which keep their indices. Returns the number of cycles
-// filled; a cycle whose fairing fails keeps its refined, unfaired patch, and
-// one CGAL finds no triangulation for stays open (and is not counted).
+struct Prepare_fill_outcome
+{
+  std::size_t filled = 0, left_open = 0;
+};
+
+// Fills the boundary cycles of `m` at most `maximum_length` long with CGAL's
+// triangulate, refine and fair (PMP::triangulate_refine_and_fair_hole()): new
+// vertices and faces come after the existing ones, which keep their indices.
+// A cycle whose fairing fails keeps its refined, unfaired patch; one that is
+// too long, or that CGAL finds no triangulation for, stays open.
 template <typename Mesh>
-std::size_t prepare_fill_holes(Mesh& m)
+Prepare_fill_outcome prepare_fill_holes(Mesh& m, double maximum_length)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
   std::vector<halfedge_descriptor> cycles;
   PMP::extract_boundary_cycles(m, std::back_inserter(cycles));
-  std::size_t filled = 0;
+  Prepare_fill_outcome outcome;
   for(halfedge_descriptor h : cycles) {
-    PMP::triangulate_refine_and_fair_hole(m, h, CGAL::Emptyset_iterator(), CGAL::Emptyset_iterator());
-    filled += !is_border(h, m);
+    // filling one cycle leaves the others' halfedges on the border
+    if(CGAL::to_double(PMP::face_border_length(h, m)) <= maximum_length)
+      PMP::triangulate_refine_and_fair_hole(m, h, CGAL::Emptyset_iterator(), CGAL::Emptyset_iterator());
+    ++(is_border(h, m) ? outcome.left_open : outcome.filled);
   }
-  return filled;
+  return outcome;
 }
 
 inline void prepare_check_size(std::size_t given, std::size_t needed, const char* what)

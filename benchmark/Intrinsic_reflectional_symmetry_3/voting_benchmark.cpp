@@ -20,7 +20,8 @@
 //   --cap-samples N       samples of the voting-pair cap study on each mesh (default 1000; 0: skip):
 //                         tau with 1/2 .. 1/16 of the similar pairs voting, against all of them
 //   --no-scaling          skip the scaling study (e.g. to run only fast vs reference)
-//   --robustness          also run the noise and holes study (camel, and FAUST with --faust)
+//   --robustness          also run the noise and holes study (camel, and FAUST with --faust),
+//                         the holes also filled first (prepare_mesh's fill_holes)
 //   --robustness-samples N  samples of that study (default 1000)
 //   --floor-study         also run the distance-floor measurements
 //   --faust DIR           FAUST folder with X.off and corres/X.{vts,sym.vts}
@@ -30,6 +31,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Dijkstra_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/check_input.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/prepare_mesh.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/perturbed_copies.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/reference_voting.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
@@ -391,6 +393,16 @@ void robustness(const std::string& name, const Mesh& m, std::size_t n)
               << (seed != IRS::internal::first_hole_seed ? ", seed " + std::to_string(seed) : std::string()) << " | "
               << num_vertices(holed) << " / " << kept.size() << " | " << similar << " | " << std::setprecision(3)
               << relative_l2(tau, tau2, map) << " | " << std::setprecision(1) << t.time() << " |" << std::endl;
+
+    // the same holes filled first (prepare_mesh's fill_holes): the holed mesh's
+    // vertices keep their ids, so the samples and the error stay the same vertices
+    t.reset();
+    const auto filled = IRS::prepare_mesh(holed, IRS::parameters::fill_holes(true));
+    const std::vector<double> tau3 = irsa_tau(filled.working_mesh(), kept, similar);
+    std::cout << "| " << name << " | " << holes << " holes, filled first (" << filled.number_of_filled_holes()
+              << " patches) | " << num_vertices(filled.working_mesh()) << " / " << kept.size() << " | " << similar
+              << " | " << std::setprecision(3) << relative_l2(tau, tau3, map) << " | " << std::setprecision(1)
+              << t.time() << " |" << std::endl;
   }
 }
 
@@ -400,7 +412,9 @@ void robustness_study(const std::vector<std::string>& dirs, const std::string& f
                "Same sample vertices (farthest-point, seed 1) on the perturbed copies; heat-method geodesics, SDF\n"
                "similarity and voting recomputed on each copy with the default parameters. Noise: isotropic\n"
                "Gaussian, mean displacement = level x mean edge length, seed 7. Holes: 3 % of the faces, as\n"
-               "balls of faces around random vertices, seed 11 (or the next that pinches no vertex and cuts off no part).\n\n"
+               "balls of faces around random vertices, seed " << IRS::internal::first_hole_seed
+            << " (or the next that pinches no vertex and cuts off no part);\n"
+               "then filled first by prepare_mesh(fill_holes(true)), the error over the holed mesh's vertices.\n\n"
                "| shape | perturbation | vertices / samples | similar pairs | relative L2 error | time s |\n"
                "|---|---|---|---|---|---|\n";
   std::string camel;

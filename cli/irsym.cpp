@@ -534,7 +534,8 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     os << "the mesh has a boundary (hole or open border) of length " << stats.longest_boundary_cycle_length
        << ", more than the square root of its area (" << std::sqrt(stats.area) << "): the method expects a closed mesh with small holes, "
        << (opt.fill_holes && stats.longest_boundary_cycle_length <= opt.max_hole_length
-             ? "and --fill-holes covers a large missing part with an invented patch that the symmetry takes for surface"
+             ? "and --fill-holes covers a large missing part with an invented patch that the symmetry takes for surface "
+               "(--max-hole-length keeps the longer boundaries open)"
              : "and large missing parts distort the geodesics");
     std::cerr << "irsym: warning: " << os.str() << '\n';
     warnings.push(os.str());

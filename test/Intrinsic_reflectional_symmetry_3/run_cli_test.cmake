@@ -228,6 +228,19 @@ string(JSON warning ERROR_VARIABLE jerr GET "${report}" warnings 0)
 if(jerr OR NOT warning MATCHES "boundary")
   message(FATAL_ERROR "report.json: no warning for an open surface (${jerr})\n${report}")
 endif()
+# filled, the warning names the invented patch and the bound that would keep
+# the boundary open; with a shorter bound, the boundary stays open
+run(0 ${WORK_DIR}/triangle.off --samples 3 --fill-holes --out ${WORK_DIR}/triangle_filled)
+if(NOT last_err MATCHES "invented patch.*--max-hole-length")
+  message(FATAL_ERROR "--fill-holes on an open surface: no warning about the patch: ${last_err}")
+endif()
+run(0 ${WORK_DIR}/triangle.off --samples 3 --fill-holes --max-hole-length 0.1 --out ${WORK_DIR}/triangle_open)
+file(READ ${WORK_DIR}/triangle_open/report.json report)
+string(JSON left_open ERROR_VARIABLE jerr GET "${report}" results holes_left_open)
+if(jerr OR NOT left_open EQUAL 1 OR NOT last_err MATCHES "distort the geodesics")
+  message(FATAL_ERROR "--max-hole-length 0.1 on a lone triangle: holes_left_open '${left_open}' (expected 1), "
+                      "warning: ${last_err} ${jerr}")
+endif()
 
 # 2. the same seed gives the same samples at another thread count
 run(0 ${WORK_DIR}/snowman/snowman.off --samples 200 --seed 3 --threads 1 --geodesics dijkstra --out ${WORK_DIR}/again)

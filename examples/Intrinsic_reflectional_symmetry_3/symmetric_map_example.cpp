@@ -1,7 +1,8 @@
 // The whole pipeline on one mesh: samples, geodesics, signatures, IRSA
 // transform, IRSA curves, symmetric regions and the symmetric vertex map.
 // Prints the curves, for a few vertices their mirror partners, and the share
-// of the vertices that the map holds in place far from the curves.
+// of the vertices that the map holds in place far from the curves. A mesh with
+// small holes is first filled on a copy, and the map brought back to its vertices.
 //
 // usage: symmetric_map_example [mesh.off [number_of_samples]]
 //        (default: a generated bent capsule, whose end-to-end symmetry is intrinsic only)
@@ -11,6 +12,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/prepare_mesh.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
@@ -19,6 +21,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdlib>
 #include <iostream>
 #include <iterator>
@@ -33,15 +37,21 @@ typedef Mesh::Face_index face_descriptor;
 
 int main(int argc, char** argv)
 {
-  Mesh mesh;
+  Mesh input;
+  IRS::Input_report report;
   try {
-    if(argc > 1) IRS::read_mesh(argv[1], mesh); // throws Input_error naming the problem
-    else mesh = IRS::generate_bent_capsule<Mesh>(2000).mesh;
-    IRS::check_input(mesh);
+    if(argc > 1) IRS::read_mesh(argv[1], input); // throws Input_error naming the problem
+    else input = IRS::generate_bent_capsule<Mesh>(2000).mesh;
+    report = IRS::check_input(input);
   } catch(const IRS::Input_error& e) {
     std::cerr << "bad input: " << e.what() << std::endl;
     return EXIT_FAILURE;
   }
+  // 0. holes would bend the geodesics around them: the pipeline runs on a copy
+  // whose holes are filled (CGAL's refined and faired hole filling), where the
+  // input's vertices keep their indices; a closed mesh is copied as it is
+  const auto prepared = IRS::prepare_mesh(input, IRS::parameters::fill_holes(report.number_of_boundary_cycles > 0));
+  Mesh mesh = prepared.working_mesh();
   const std::size_t n = argc > 2 ? std::size_t(std::atoi(argv[2])) : (num_vertices(mesh) + 3) / 4;
 
   // 1. samples and the sample-to-vertex geodesic distance matrix
@@ -94,5 +104,13 @@ int main(int argc, char** argv)
             << (IRS::is_suspect_symmetric_map(fixed, distortion)
                   ? ": the map is suspect, another random_seed may do better" : "")
             << std::endl;
+
+  // 6. the map on the input's vertices (the same map when nothing was filled)
+  std::vector<long> working_partners(num_vertices(mesh));
+  for(vertex_descriptor v : vertices(mesh)) working_partners[std::size_t(v)] = get(partner, v);
+  const std::vector<std::ptrdiff_t> input_partners = IRS::transfer_vertex_map_to_input(prepared, working_partners);
+  std::cout << prepared.number_of_filled_holes() << " hole(s) filled first; "
+            << std::count_if(input_partners.begin(), input_partners.end(), [](std::ptrdiff_t p) { return p >= 0; })
+            << " of the " << num_vertices(input) << " input vertices with a mirror partner" << std::endl;
   return EXIT_SUCCESS;
 }

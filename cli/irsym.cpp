@@ -101,7 +101,7 @@ usage: irsym MESH --out DIR [options]
   --fill-holes         first fill every hole (boundary cycle) of the mesh with a refined and
                        faired patch (prepare_mesh's fill_holes, CGAL's hole filling); all
                        outputs still refer to the input's vertices and faces. Every boundary
-                       is filled, so not for surfaces open by design. Measured on FAUST and
+                       is filled, unless --max-hole-length bounds them. Measured on FAUST and
                        SCAPE with 8 holes cut (symmetry_map_benchmark --holes 8 --fill-holes):
                        see the manual, "Filling the holes first"
   --max-hole-length L  with --fill-holes, fill only the boundary cycles at most L long (in the

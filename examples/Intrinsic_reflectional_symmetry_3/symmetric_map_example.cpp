@@ -2,7 +2,7 @@
 // transform, IRSA curves, symmetric regions and the symmetric vertex map.
 // Prints the curves, for a few vertices their mirror partners, and the share
 // of the vertices that the map holds in place far from the curves. A mesh with
-// small holes is first filled on a copy, and the map brought back to its vertices.
+// holes is first filled on a copy, and the map brought back to its vertices.
 //
 // usage: symmetric_map_example [mesh.off [number_of_samples]]
 //        (default: a generated bent capsule, whose end-to-end symmetry is intrinsic only)

@@ -889,8 +889,9 @@ TEST(Preparation, FillHolesUpToAMaximumBoundaryLength)
   EXPECT_EQ(points_of(tm), before);
 }
 
-// with a target: filled first, then remeshed to the target; a closed input is
-// left as it is (nothing to fill, still an exact copy)
+// with a target: filled first, then remeshed to the target (a hole longer than
+// maximum_hole_boundary_length stays open through it); a closed input is left
+// as it is (nothing to fill, still an exact copy)
 TEST(Preparation, FillHolesThenRemeshAndClosedInputUnchanged)
 {
   const Mesh tm = sphere_with_two_holes<Mesh>();
@@ -902,6 +903,20 @@ TEST(Preparation, FillHolesThenRemeshAndClosedInputUnchanged)
   EXPECT_GT(double(report.number_of_vertices), 0.9 * 1200);
   EXPECT_LT(double(report.number_of_vertices), 1.1 * 1200);
   EXPECT_EQ(prepared.number_of_input_vertices(), num_vertices(tm));
+
+  // the larger hole left open by the bound stays open through the remeshing
+  const Mesh uneven = sphere_with_two_holes<Mesh>(0.45, 0.9);
+  const double longest = IRS::check_input(uneven).longest_boundary_cycle_length;
+  const auto partly = IRS::prepare_mesh(uneven, IRS::parameters::fill_holes(true)
+                                                  .maximum_hole_boundary_length(0.9 * longest)
+                                                  .target_number_of_vertices(1200));
+  EXPECT_EQ(partly.number_of_filled_holes(), 1u);
+  EXPECT_EQ(partly.number_of_holes_left_open(), 1u);
+  const IRS::Input_report partly_report = IRS::check_input(partly.working_mesh());
+  EXPECT_EQ(partly_report.number_of_boundary_cycles, 1u);
+  EXPECT_NEAR(partly_report.longest_boundary_cycle_length, longest, 0.05 * longest);
+  EXPECT_GT(double(partly_report.number_of_vertices), 0.9 * 1200);
+  EXPECT_LT(double(partly_report.number_of_vertices), 1.1 * 1200);
 
   const Mesh closed = sphere<Mesh>(2);
   const auto same = IRS::prepare_mesh(closed, IRS::parameters::fill_holes(true));

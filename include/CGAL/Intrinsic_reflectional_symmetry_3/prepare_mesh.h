@@ -336,6 +336,7 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
     }
   }
   const unsigned int iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 3u);
+  const bool fill_holes = choose_parameter(get_parameter(np, internal_np::fill_holes), false);
   const double maximum_hole_boundary_length = choose_parameter(
     get_parameter(np, internal_np::maximum_hole_boundary_length), std::numeric_limits<double>::infinity());
   if(!(maximum_hole_boundary_length > 0)) {
@@ -344,7 +345,7 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
     throw Input_error(Input_problem::invalid_parameter, os.str());
   }
   // a bound on the holes to fill means nothing without filling: say so rather than ignore it
-  if(std::isfinite(maximum_hole_boundary_length) && !choose_parameter(get_parameter(np, internal_np::fill_holes), false))
+  if(std::isfinite(maximum_hole_boundary_length) && !fill_holes)
     throw Input_error(Input_problem::invalid_parameter,
                       "maximum_hole_boundary_length is given without fill_holes(true): no hole would be filled");
 
@@ -361,7 +362,6 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   }
   Working_mesh working;
   PMP::polygon_soup_to_polygon_mesh(points, triangles, working);
-  const bool fill_holes = choose_parameter(get_parameter(np, internal_np::fill_holes), false);
   const internal::Prepare_fill_outcome holes = fill_holes
     ? internal::prepare_fill_holes(working, maximum_hole_boundary_length) : internal::Prepare_fill_outcome();
 

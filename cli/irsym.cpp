@@ -69,6 +69,7 @@ struct Seed_run
   std::vector<long> region, partner;
   std::size_t region_faces = 0, mapped_vertices = 0;
   double fixed_share = 0., distortion = 0.;
+  bool guided = false; // voted by the pairs that the global reflection swaps
   bool suspect() const { return IRS::is_suspect_symmetric_map(fixed_share, distortion); }
 };
 
@@ -90,7 +91,11 @@ usage: irsym MESH --out DIR [options]
                        again from the samples on with seeds S+1, S+2, ..., at most N runs in
                        all; keep the first map that is not suspect, or else the one of least
                        isometric_distortion + 0.3 fixed_point_share (default: 5; 1 runs
-                       seed S alone). Measured: no second run on FAUST's 19 humans, 2.6
+                       seed S alone). When every run's map is suspect, one more run on the
+                       samples of the map kept lets only the sample pairs vote that the
+                       shape's global reflection swaps (global_reflection_map(), from the
+                       Laplace spectrum); its map replaces the kept one if less defective
+                       (results.guided). Measured: no second run on FAUST's 19 humans, 2.6
                        runs per mesh on SCAPE's 18 (seed 2; 5 instead of 3: +0.8 to +1.6
                        points of correspondence rate there, over three seeds)
   --geodesics G        geodesic oracle: heat (default), exact or dijkstra
@@ -135,7 +140,8 @@ outputs in DIR:
                        changes the distances between landmarks by more than 0.04
                        sqrt(area) on average (isometric_distortion); results.tries: seed,
                        fixed_point_share and isometric_distortion of each run, and
-                       results.seed_kept: the seed whose run all outputs come from
+                       results.seed_kept: the seed whose run all outputs come from;
+                       results.guided: whether that run is the guided one (see --tries)
   samples.txt          the samples, as input vertex ids (one per line)
   tau.txt              the IRSA transform, one value per input vertex (input order)
   transform.ply        input mesh coloured by the IRSA transform (vertex scalar 'transform')
@@ -433,25 +439,47 @@ std::string preparation_words(const IRS::Prepared_mesh<GeomTraits>& prepared)
 template <typename Oracle>
 Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, const std::vector<double>& vertex_sdf,
                   const std::vector<double>& areas, unsigned seed, const std::function<bool(double)>& within_limit,
-                  irsym::Stage_log& log)
+                  irsym::Stage_log& log, const Seed_run* guided_by = nullptr,
+                  const std::vector<long>* global_map = nullptr)
 {
-  const std::string suffix = seed == opt.seed ? "" : " (seed " + std::to_string(seed) + ")";
+  const std::string suffix = guided_by != nullptr ? " (seed " + std::to_string(seed) + ", guided)"
+                             : seed == opt.seed   ? ""
+                                                  : " (seed " + std::to_string(seed) + ")";
   Seed_run r;
   r.seed = seed;
-  log.start("sampling" + suffix);
-  r.samples = opt.samples
-    ? IRS::farthest_point_samples(work, IRS::parameters::number_of_samples(std::size_t(*opt.samples)).random_seed(seed))
-    : IRS::farthest_point_samples(work, IRS::parameters::random_seed(seed));
-  log.stop();
+  if(guided_by != nullptr)
+  {
+    // the samples and distances of the run it follows; the global
+    // reflection decides which of their pairs vote
+    r.samples = guided_by->samples;
+    r.D = guided_by->D;
+    r.guided = true;
+  }
+  else
+  {
+    log.start("sampling" + suffix);
+    r.samples = opt.samples
+      ? IRS::farthest_point_samples(work, IRS::parameters::number_of_samples(std::size_t(*opt.samples)).random_seed(seed))
+      : IRS::farthest_point_samples(work, IRS::parameters::random_seed(seed));
+    log.stop();
 
-  log.start("geodesic matrix" + suffix);
-  r.D = IRS::compute_geodesic_distance_matrix(oracle, r.samples, IRS::parameters::callback(within_limit));
-  log.stop();
+    log.start("geodesic matrix" + suffix);
+    r.D = IRS::compute_geodesic_distance_matrix(oracle, r.samples, IRS::parameters::callback(within_limit));
+    log.stop();
+  }
 
   log.start("signatures" + suffix);
   const IRS::Sdf_signatures signatures = IRS::sdf_signatures(vertex_sdf, areas, r.D);
   std::vector<std::pair<std::size_t, std::size_t>> similar;
   IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
+  if(guided_by != nullptr && global_map != nullptr)
+  {
+    std::vector<std::pair<std::size_t, std::size_t>> swapped;
+    IRS::pairs_consistent_with_map(
+      work, r.D, boost::make_iterator_property_map(global_map->begin(), get(boost::vertex_index, work)), similar,
+      std::back_inserter(swapped));
+    similar.swap(swapped);
+  }
   r.similar_pairs = similar.size();
   log.stop();
 
@@ -488,8 +516,14 @@ Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, co
   std::vector<long> map_region(num_vertices(work), -1);
   const auto partner_map = boost::make_iterator_property_map(r.partner.begin(), get(boost::vertex_index, work));
   const auto map_region_map = boost::make_iterator_property_map(map_region.begin(), get(boost::vertex_index, work));
-  r.mapped_vertices = IRS::symmetric_vertex_map(
-    work, r.D, r.curves, partner_map, IRS::parameters::callback(within_limit).vertex_region_map(map_region_map));
+  if(guided_by != nullptr && global_map != nullptr)
+    r.mapped_vertices = IRS::symmetric_vertex_map(
+      work, r.D, r.curves, partner_map,
+      IRS::parameters::callback(within_limit).vertex_region_map(map_region_map).initial_vertex_map(
+        boost::make_iterator_property_map(global_map->begin(), get(boost::vertex_index, work))));
+  else
+    r.mapped_vertices = IRS::symmetric_vertex_map(
+      work, r.D, r.curves, partner_map, IRS::parameters::callback(within_limit).vertex_region_map(map_region_map));
   // a reflection fixes its axis alone and preserves distances: a map that
   // keeps parts far from the curves in place (a limb onto itself) or sends a
   // part by another symmetry is suspect
@@ -570,6 +604,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   // (internal::best_of_tries(): the package's retry rule). A time limit
   // reached during a later try keeps the best earlier run, with a warning.
   irsym::Json tries = irsym::Json::array();
+  bool guided_started = false;
   auto outcome = IRS::internal::best_of_tries<Seed_run>(
     [&](unsigned seed) {
       Seed_run run = run_seed(opt, work, oracle, vertex_sdf, areas, seed, within_limit, log);
@@ -581,17 +616,41 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
                   << "): trying seed " << seed + 1u << '\n';
       return run;
     },
-    opt.seed, opt.tries);
+    opt.seed, opt.tries,
+    // every try suspect: the global reflection (from the spectrum) picks the
+    // pairs of the kept run's samples that vote again
+    [&](const Seed_run& suspect_run, Seed_run& guided) {
+      guided_started = true;
+      log.start("global reflection");
+      std::vector<long> global_map(num_vertices(work), -1);
+      const bool found = IRS::global_reflection_map(
+        work, suspect_run.samples, boost::make_iterator_property_map(global_map.begin(), get(boost::vertex_index, work)));
+      log.stop();
+      if(!found) {
+        std::cerr << "[irsym] every try's map is suspect, and no global reflection was found\n";
+        tries.push(irsym::Json::object().add("seed", suspect_run.seed).add("guided", true).add("found", false));
+        return false;
+      }
+      std::cerr << "[irsym] every try's map is suspect: voting again on the samples of seed " << suspect_run.seed
+                << " with the pairs that the global reflection swaps\n";
+      guided = run_seed(opt, work, oracle, vertex_sdf, areas, suspect_run.seed, within_limit, log, &suspect_run,
+                        &global_map);
+      tries.push(irsym::Json::object().add("seed", guided.seed).add("guided", true).add("curves", guided.curves.size())
+                   .add("fixed_point_share", guided.fixed_share).add("isometric_distortion", guided.distortion));
+      return true;
+    });
   if(outcome.stopped) {
     log.abandon();
     const unsigned stopped_seed = opt.seed + unsigned(outcome.runs);
     std::ostringstream os;
-    os << "the time limit of " << opt.time_limit << " s was reached during the run of seed "
-       << stopped_seed << " (" << outcome.stop_message << "); the outputs come from seed "
+    os << "the time limit of " << opt.time_limit << " s was reached during the "
+       << (guided_started ? "guided run" : "run of seed " + std::to_string(stopped_seed)) << " ("
+       << outcome.stop_message << "); the outputs come from seed "
        << outcome.kept.seed << ", the best of the " << outcome.runs << " complete run(s)";
     std::cerr << "irsym: warning: " << os.str() << '\n';
     warnings.push(os.str());
-    tries.push(irsym::Json::object().add("seed", stopped_seed).add("stopped", true));
+    tries.push(irsym::Json::object().add("seed", guided_started ? outcome.kept.seed : stopped_seed)
+                 .add("guided", guided_started).add("stopped", true));
   }
   Seed_run kept = std::move(outcome.kept);
   report.add("warnings", warnings);
@@ -687,6 +746,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
      .add("isometric_distortion", kept.distortion)
      .add("map_suspect", map_suspect)
      .add("seed_kept", kept.seed)
+     .add("guided", kept.guided)
      .add("tries", tries)
      .add("segments", segments);
   irsym::Json curve_list = irsym::Json::array();

@@ -44,7 +44,7 @@
 // apart. Diagnostics only: CR% stays the protocol's figure.
 //
 // usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--similarity EPS_SIM] [--distance EPS_DIS]
-//                               [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--write DIR]
+//                               [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--log-runs] [--write DIR]
 //                               [--threads T] [--noise LEVEL] [--holes H] [--fill-holes] [--no-scape] [--no-faust]
 //   DATA_DIR  default ../shared/data (relative to the current directory);
 //             faust_5k/ and kim_bim_benchmark/ inside it, each skipped if absent
@@ -63,7 +63,10 @@
 //   N (tries) as irsym --tries (default 1): where the map is suspect
 //             (fixed% above 10 or dist above 0.04), run again with seeds S+1,
 //             S+2, ..., at most N runs, and keep the first map that is not
-//             suspect, or else the one of least dist + 0.3 fixed share; columns seed (of
+//             suspect, or else the one of least dist + 0.3 fixed share; when every
+//             run is suspect, one more run on the kept run's samples votes with
+//             the pairs that the global reflection swaps (global_reflection_map())
+//             and is kept if less defective (seed column "Sg"); columns seed (of
 //             the run kept) and runs; total s sums the runs, the other times
 //             are those of the run kept
 //   DIR       write NAME.map (partner per vertex, -1 for none) and
@@ -80,6 +83,8 @@
 //             would pinch a vertex or cut off a part); the ground truth
 //             follows the vertices, and the checks of removed vertices are
 //             dropped (column checks)
+//   --log-runs  one line per run (each try, and the guided run) on stderr:
+//             seed, fixed%, dist, defect and CR%, to study the retry rule
 //   --fill-holes  the pipeline runs on prepare_mesh(fill_holes(true)) of the
 //             (perturbed) mesh, as irsym --fill-holes; the map and the curves
 //             are brought back to the mesh's own vertices and evaluated there,
@@ -118,6 +123,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -150,6 +156,7 @@ struct Options
   double noise = 0.;     // --noise: mean displacement, in mean edge lengths
   std::size_t holes = 0; // --holes: small holes cut (3 % of the faces)
   bool fill_holes = false; // --fill-holes: the pipeline runs on the filled mesh
+  bool log_runs = false;   // --log-runs: one line per run on stderr, with its CR
   bool perturbed() const { return noise > 0. || holes > 0; }
 };
 
@@ -163,9 +170,15 @@ struct Pipeline_result
   double fixed_share = 0.; // fixed_point_share() of the map, not timed
   double distortion = 0.;  // isometric_distortion() of the map, not timed
   unsigned seed = 0; // of the run kept
+  bool guided = false; // voted by the pairs that the global reflection swaps (irsym --tries)
   int runs = 1;      // runs made with --tries; the times are those of the run kept, but total s sums all runs
   double seconds[6] = {0., 0., 0., 0., 0., 0.}; // geodesics, signatures, voting, curves, map, total
 };
+
+// --log-runs: the ground truth of the shape being run (not with --fill-holes,
+// whose runs are on another mesh), and one line per run on stderr
+const std::vector<std::pair<std::size_t, std::size_t>>* runs_ground_truth = nullptr;
+void log_run(const Options& o, const Mesh& m, const Pipeline_result& r);
 
 // the thresholds that every stage after the voting tests distances with, as
 // their documentation asks: one set for the map, the regions and the CR0% map
@@ -177,8 +190,17 @@ auto map_parameters(const Options& o)
 // the package's pipeline with its defaults; only the number of samples and the
 // seed are set. The vertex SDF and areas, which do not depend on the samples,
 // come from run_pipeline(), once for all runs, as in irsym
+// a vertex map by vertex index as a property map of Mesh
+auto global_map_property(const std::vector<std::ptrdiff_t>& map)
+{
+  return boost::make_iterator_property_map(map.begin(), get(boost::vertex_index, Mesh()));
+}
+
+// With `global_map`, the run reuses the samples and distances of `guided_by`
+// and only the similar pairs that the map swaps vote (as irsym --tries)
 Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::vector<double>& vertex_sdf,
-                                  const std::vector<double>& vertex_areas)
+                                  const std::vector<double>& vertex_areas, const Pipeline_result* guided_by = nullptr,
+                                  const std::vector<std::ptrdiff_t>* global_map = nullptr)
 {
   const std::size_t number_of_samples = o.samples;
   const double similarity = o.similarity;
@@ -187,10 +209,16 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   total.start();
   t.start();
   const std::size_t ns = (std::min)(number_of_samples, std::size_t(num_vertices(m)));
-  const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(o.seed));
-  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
-  r.D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const bool guided = guided_by != nullptr && global_map != nullptr;
+  if(guided) r.D = guided_by->D;
+  else
+  {
+    const std::vector<std::size_t> samples =
+      IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(o.seed));
+    const IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+    r.D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  }
+  r.guided = guided;
   const IRS::Geodesic_distance_matrix& D = r.D;
   r.seconds[0] = t.time(); t.reset();
 
@@ -199,6 +227,14 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   if(similarity < 0.) IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
   else IRS::similar_sample_pairs(signatures, std::back_inserter(similar),
                                  IRS::parameters::similarity_threshold(similarity));
+  if(guided)
+  {
+    std::vector<std::pair<std::size_t, std::size_t>> swapped;
+    IRS::pairs_consistent_with_map(
+      m, D, boost::make_iterator_property_map(global_map->begin(), get(boost::vertex_index, m)), similar,
+      std::back_inserter(swapped));
+    similar.swap(swapped);
+  }
   r.similar_pairs = similar.size();
   r.seconds[1] = t.time(); t.reset();
 
@@ -215,7 +251,12 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
 
   auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
   auto map_region = get(CGAL::dynamic_vertex_property_t<int>(), m);
-  IRS::symmetric_vertex_map(m, D, r.curves, partner, map_parameters(o).vertex_region_map(map_region));
+  if(guided)
+    IRS::symmetric_vertex_map(m, D, r.curves, partner,
+                              map_parameters(o).vertex_region_map(map_region).initial_vertex_map(
+                                global_map_property(*global_map)));
+  else
+    IRS::symmetric_vertex_map(m, D, r.curves, partner, map_parameters(o).vertex_region_map(map_region));
   auto region = get(CGAL::dynamic_face_property_t<int>(), m);
   r.region_faces = IRS::symmetric_regions(m, D, r.curves, region, map_parameters(o));
   r.partner.assign(num_vertices(m), -1);
@@ -226,6 +267,37 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   r.distortion = IRS::isometric_distortion(m, partner, IRS::parameters::vertex_region_map(map_region));
   r.seed = o.seed;
   return r;
+}
+
+// --log-runs: the global reflection on the samples of `r`, alone and refined
+// by ZoomOut up to 150 functions on the whole mesh
+void log_global_reflection(const Options& o, const Mesh& m, const Pipeline_result& r)
+{
+  const IRS::internal::Curves_mesh cm = IRS::internal::make_curves_mesh(m, CGAL::parameters::default_values());
+  const IRS::internal::Global_reflection g =
+    IRS::internal::global_reflection<CGAL::Parallel_if_available_tag>(cm, r.D.sources());
+  if(!g.found) { std::cerr << "  no global reflection\n"; return; }
+  Pipeline_result global;
+  global.seed = r.seed;
+  auto as_partner = [&](const std::vector<std::size_t>& p) {
+    std::vector<std::ptrdiff_t> out(p.size(), -1);
+    for(std::size_t v = 0; v < p.size(); ++v) if(p[v] != IRS::internal::Curves_mesh::none) out[v] = std::ptrdiff_t(p[v]);
+    return out;
+  };
+  global.partner = as_partner(g.partner);
+  global.fixed_share = IRS::fixed_point_share(m, r.curves, global_map_property(global.partner));
+  global.distortion = IRS::isometric_distortion(m, global_map_property(global.partner));
+  std::cerr << "  (global reflection, pattern " << g.pattern << ", off-diagonal " << g.off_diagonal_share << ")";
+  log_run(o, m, global);
+  std::vector<std::size_t> verts(cm.number_of_vertices), refined = g.partner;
+  std::iota(verts.begin(), verts.end(), std::size_t(0));
+  IRS::internal::spectral_refinement<CGAL::Parallel_if_available_tag>(
+    cm, r.D.sources(), verts, std::vector<unsigned char>(cm.number_of_vertices, 1), 150, refined);
+  global.partner = as_partner(refined);
+  global.fixed_share = IRS::fixed_point_share(m, r.curves, global_map_property(global.partner));
+  global.distortion = IRS::isometric_distortion(m, global_map_property(global.partner));
+  std::cerr << "  (global reflection refined)";
+  log_run(o, m, global);
 }
 
 // as irsym --tries (the package's retry rule, internal::best_of_tries()):
@@ -244,11 +316,38 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
       run.seed = seed;
       Pipeline_result r = run_pipeline_once(m, run, vertex_sdf, vertex_areas);
       total_seconds += r.seconds[5];
+      log_run(o, m, r);
+      if(o.log_runs && seed == o.seed) log_global_reflection(o, m, r);
       return r;
     },
-    o.seed, o.tries);
+    o.seed, o.tries,
+    [&](const Pipeline_result& suspect_run, Pipeline_result& g) {
+      CGAL::Real_timer tg;
+      tg.start();
+      std::vector<std::ptrdiff_t> global_map(num_vertices(m), -1);
+      if(!IRS::global_reflection_map(m, suspect_run.D.sources(),
+                                     boost::make_iterator_property_map(global_map.begin(), get(boost::vertex_index, m))))
+        return false;
+      if(o.log_runs)
+      {
+        Pipeline_result global;
+        global.seed = suspect_run.seed;
+        global.partner = global_map;
+        global.fixed_share = IRS::fixed_point_share(m, suspect_run.curves, global_map_property(global_map));
+        global.distortion = IRS::isometric_distortion(m, global_map_property(global_map));
+        std::cerr << "  (the global reflection itself)";
+        log_run(o, m, global);
+      }
+      Options run = o;
+      run.seed = suspect_run.seed;
+      g = run_pipeline_once(m, run, vertex_sdf, vertex_areas, &suspect_run, &global_map);
+      g.seconds[5] = tg.time(); // with the global reflection
+      total_seconds += g.seconds[5];
+      log_run(o, m, g);
+      return true;
+    });
   Pipeline_result kept = std::move(outcome.kept);
-  kept.runs = outcome.runs;
+  kept.runs = outcome.runs + (outcome.guided_tried ? 1 : 0);
   kept.seconds[1] += sdf_seconds;
   kept.seconds[5] = total_seconds;
 
@@ -414,6 +513,16 @@ Metrics evaluate(const Mesh& m, const std::vector<std::pair<std::size_t, std::si
   return out;
 }
 
+void log_run(const Options& o, const Mesh& m, const Pipeline_result& r)
+{
+  if(!o.log_runs || runs_ground_truth == nullptr || o.fill_holes) return;
+  Pipeline_result copy = r;
+  copy.partner_without_spectral = r.partner;
+  std::cerr << "  run seed " << r.seed << (r.guided ? " (guided)" : "") << ": fixed " << 100. * r.fixed_share
+            << " %, distortion " << r.distortion << ", defect " << IRS::symmetric_map_defect(r.fixed_share, r.distortion)
+            << ", CR " << evaluate(m, *runs_ground_truth, copy).cr() << " %" << std::endl;
+}
+
 std::vector<long> read_integers(const fs::path& p, bool first_column_only)
 {
   std::ifstream in(p);
@@ -480,7 +589,7 @@ void print_row(const std::string& name, const Mesh& m, std::size_t samples, cons
             << r.seconds[5] << std::setprecision(1) << std::setw(8) << e.own_side() << std::setw(7) << e.isometric_share()
             << std::setprecision(2) << std::setw(8) << e.cr_isometric() << std::setprecision(1) << std::setw(11)
             << e.failed_more_isometric() << std::setw(10) << e.at_contact() << std::setw(8) << 100. * r.fixed_share
-            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << r.seed << std::setw(6) << r.runs << std::setw(8) << e.checks << std::endl;
+            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << (std::to_string(r.seed) + (r.guided ? "g" : "")) << std::setw(6) << r.runs << std::setw(8) << e.checks << std::endl;
 }
 
 struct Summary
@@ -610,7 +719,10 @@ Faust_means run_faust(const Options& o)
       if(x[k] >= 1 && y[k] >= 1 && std::size_t(x[k]) <= num_vertices(m) && std::size_t(y[k]) <= num_vertices(m))
         gt.emplace_back(std::size_t(x[k] - 1), std::size_t(y[k] - 1)); // 1-based
     Pipeline_result r;
+    runs_ground_truth = &gt;
+    if(o.log_runs) std::cerr << name << '\n';
     if(!perturb_and_run(o, name, m, gt, r)) continue;
+    runs_ground_truth = nullptr;
     const Metrics e = evaluate(m, gt, r);
     print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
     write_outputs(o, name, r);
@@ -722,7 +834,10 @@ void run_scape(const Options& o)
       gt.emplace_back(std::size_t(to_mended[std::size_t(a)]), std::size_t(to_mended[std::size_t(b)]));
     }
     Pipeline_result r;
+    runs_ground_truth = &gt;
+    if(o.log_runs) std::cerr << name << '\n';
     if(!perturb_and_run(o, name, m, gt, r)) continue;
+    runs_ground_truth = nullptr;
     const Metrics e = evaluate(m, gt, r);
     print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
     write_outputs(o, name, r);
@@ -754,6 +869,7 @@ int main(int argc, char** argv)
     };
     if(a == "--samples") o.samples = std::size_t(std::max(1L, std::atol(value().c_str())));
     else if(a == "--only") o.only = value();
+    else if(a == "--log-runs") o.log_runs = true;
     else if(a == "--similarity") o.similarity = std::atof(value().c_str());
     else if(a == "--distance") o.distance = std::atof(value().c_str());
     else if(a == "--symmetry-tolerance") o.region_tolerance = std::atof(value().c_str());
@@ -777,7 +893,7 @@ int main(int argc, char** argv)
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--write DIR] "
-                   "[--threads T] [--similarity EPS_SIM] [--distance EPS_DIS] [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--noise LEVEL] [--holes H] [--fill-holes] [--no-scape] [--no-faust]\n";
+                   "[--threads T] [--similarity EPS_SIM] [--distance EPS_DIS] [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--log-runs] [--noise LEVEL] [--holes H] [--fill-holes] [--no-scape] [--no-faust]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }

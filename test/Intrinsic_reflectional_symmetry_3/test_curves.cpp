@@ -1237,6 +1237,53 @@ TEST(Curves, BestOfTriesKeepsTheFirstGoodMapOrTheLeastDefect)
   EXPECT_THROW(IRS::internal::best_of_tries<Run>(cancel_at(0), 0u, 3), IRS::Operation_cancelled);
   EXPECT_THROW(IRS::internal::best_of_tries<Run>([](unsigned) -> Run { throw std::runtime_error("no memory"); }, 0u, 3),
                std::runtime_error);
+
+  // every try suspect: the guided run is asked once, with the map kept, and
+  // replaces it where keeps_guided_run(): a lower defect, or no part held in
+  // place and a distortion a posed shape's right map reaches
+  int guided_calls = 0;
+  auto guided_with = [&](Run g) {
+    return [&guided_calls, g](const Run& kept, Run& out) {
+      ++guided_calls;
+      EXPECT_EQ(kept.seed, 1u);
+      out = g;
+      return true;
+    };
+  };
+  auto held = IRS::internal::best_of_tries<Run>(run, 0u, 3, guided_with({9, 0.30, 0.01})); // defect 0.10 > 0.075
+  EXPECT_EQ(guided_calls, 1);
+  EXPECT_EQ(held.kept.seed, 1u);
+  EXPECT_TRUE(held.guided_tried);
+  EXPECT_FALSE(held.guided_kept);
+  auto lower = IRS::internal::best_of_tries<Run>(run, 0u, 3, guided_with({9, 0.15, 0.02})); // defect 0.065
+  EXPECT_EQ(lower.kept.seed, 9u);
+  EXPECT_TRUE(lower.guided_kept);
+  auto posed = IRS::internal::best_of_tries<Run>(run, 0u, 3, guided_with({9, 0.02, 0.09})); // 0.096, but posed-like
+  EXPECT_EQ(posed.kept.seed, 9u);
+  auto distorted = IRS::internal::best_of_tries<Run>(run, 0u, 3, guided_with({9, 0.02, 0.11}));
+  EXPECT_EQ(distorted.kept.seed, 1u);
+  EXPECT_TRUE(IRS::keeps_guided_run(0.1, IRS::guided_run_max_distortion, 0., 0.));
+  EXPECT_FALSE(IRS::keeps_guided_run(0.11, IRS::guided_run_max_distortion, 0., 0.));
+  EXPECT_FALSE(IRS::keeps_guided_run(0.1, 1.01 * IRS::guided_run_max_distortion, 0., 0.));
+  // not asked where a try is not suspect, nor after a cancelled try; a
+  // guided run that finds no reflection (false) leaves the map kept, and a
+  // cancelled one reports it
+  guided_calls = 0;
+  auto good = IRS::internal::best_of_tries<Run>(run, 3u, 3, guided_with({9, 0., 0.}));
+  EXPECT_EQ(guided_calls, 0);
+  EXPECT_FALSE(good.guided_tried);
+  auto late = IRS::internal::best_of_tries<Run>(cancel_at(2), 0u, 3, guided_with({9, 0., 0.}));
+  EXPECT_EQ(guided_calls, 0);
+  EXPECT_EQ(late.kept.seed, 1u);
+  auto none = IRS::internal::best_of_tries<Run>(run, 0u, 3, [](const Run&, Run&) { return false; });
+  EXPECT_EQ(none.kept.seed, 1u);
+  EXPECT_FALSE(none.guided_tried);
+  auto cancelled = IRS::internal::best_of_tries<Run>(run, 0u, 3, [](const Run&, Run&) -> bool {
+    throw IRS::Operation_cancelled("global_reflection_map");
+  });
+  EXPECT_TRUE(cancelled.stopped);
+  EXPECT_EQ(cancelled.kept.seed, 1u);
+  EXPECT_EQ(cancelled.runs, 3);
 }
 
 TEST(Curves, SpectralRefinementWithSidesMendsHandsMappedToThemselves)
@@ -1394,6 +1441,234 @@ TEST(Curves, BentCapsuleGivesItsIntrinsicAxis)
   EXPECT_GE(q.share(), 0.95);
   EXPECT_GE(q_far.evaluated, pts.size() / 3);
   EXPECT_GE(q_far.share(), 0.95);
+}
+
+// ---------------------------------------------------------------- global reflection
+
+// The whole shape's reflection from the sign flips of its first Laplace
+// eigenfunctions (global_reflection_map()): the map follows a global
+// isometry of the shape; the identity's pattern is never tried and a map
+// that holds many samples in place is never kept. The stick figure has two
+// mirror planes, which compose into a half turn, an isometry too, whose
+// functional map is as diagonal: the sign patterns cannot tell it from a
+// reflection (on a human it is no isometry). Out of reach: a surface of
+// revolution (the snowman), whose eigenfunctions come in pairs of one
+// eigenvalue that a symmetry rotates into each other rather than flips; and
+// the bent capsule (measured: 44.5 % of the vertices within the bound of
+// the half turn, 3.1 % of its end-to-end reflection), a thin tube nearly
+// invariant under turns about its axis, which 31 functions do not resolve.
+TEST(Curves, GlobalReflectionFollowsAKnownSymmetry)
+{
+  struct Case
+  {
+    std::string name;
+    IRS::Generated_shape<Mesh> shape;
+    double distortion; // as in map_quality()
+  };
+  const std::vector<Case> cases{{"stick figure", IRS::generate_stick_figure<Mesh>(3000), 0.}};
+  for(const Case& c : cases)
+  {
+    SCOPED_TRACE(c.name);
+    const Mesh& tm = c.shape.mesh;
+    const std::vector<std::size_t> samples =
+      IRS::farthest_point_samples(tm, IRS::parameters::number_of_samples(std::size_t(400)).random_seed(1u));
+    std::vector<std::ptrdiff_t> partner(num_vertices(tm), -2);
+    ASSERT_TRUE(IRS::global_reflection_map(tm, samples, boost::make_iterator_property_map(partner.begin(),
+                                                                                          get(boost::vertex_index, tm))));
+    const std::vector<Point> pts = vertex_points(tm);
+    const std::vector<int> everywhere(pts.size(), 0);
+    double best = 0.;
+    std::string best_name;
+    std::size_t fixed = 0;
+    for(std::size_t v = 0; v < pts.size(); ++v)
+    {
+      ASSERT_GE(partner[v], 0) << "every vertex lies on a face";
+      ASSERT_LT(partner[v], std::ptrdiff_t(pts.size()));
+      fixed += distance(pts[v], pts[std::size_t(partner[v])]) < 2. * c.shape.mean_edge_length;
+    }
+    std::vector<IRS::Known_symmetry> isometries = c.shape.symmetries;
+    ASSERT_EQ(isometries.size(), 2u);
+    IRS::Known_symmetry half_turn = isometries[0];
+    half_turn.name = "half turn (" + isometries[0].name + " after " + isometries[1].name + ")";
+    for(std::size_t v = 0; v < pts.size(); ++v)
+    {
+      const std::ptrdiff_t w = isometries[1].mirror[v];
+      half_turn.mirror[v] = w < 0 ? -1 : isometries[0].mirror[std::size_t(w)];
+    }
+    isometries.push_back(half_turn);
+    for(const IRS::Known_symmetry& k : isometries)
+    {
+      const double share = map_quality(pts, partner, everywhere, 0, k, 2. * c.shape.mean_edge_length, c.distortion).share();
+      if(share > best) { best = share; best_name = k.name; }
+    }
+    std::cout << "[ " << c.name << " ] global reflection ~ " << best_name << ": " << 100. * best
+              << " % of the vertices within 2 edges of its mirror; " << 100. * double(fixed) / double(pts.size())
+              << " % within 2 edges of themselves" << std::endl;
+    EXPECT_GE(best, 0.9);
+    EXPECT_LE(double(fixed), 0.15 * double(pts.size()));
+  }
+}
+
+// `f` throws Input_error of `problem` whose message contains `words`
+template <typename F>
+void expect_input_error(F f, IRS::Input_problem problem, const std::string& words)
+{
+  try
+  {
+    f();
+    ADD_FAILURE() << "no exception (expected one naming \"" << words << "\")";
+  }
+  catch(const IRS::Input_error& e)
+  {
+    EXPECT_EQ(e.problem(), problem) << e.what();
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+  }
+}
+
+TEST(Curves, PairsConsistentWithMapAreThePairsItSwaps)
+{
+  // the capsule's z = 0 plane: the pairs steered by its mirror are kept,
+  // the random ones are not; every pair kept meets the definition
+  const auto shape = IRS::generate_capsule<Mesh>(1500);
+  const Mesh& tm = shape.mesh;
+  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(tm);
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(tm, IRS::parameters::number_of_samples(std::size_t(300)).random_seed(1u));
+  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const Pairs mirror_pairs = mirror_similar_pairs(shape.symmetries, {2}, D, 0., 7);
+  const Pairs mixed = mirror_similar_pairs(shape.symmetries, {2}, D, 0.05, 7);
+  const std::vector<std::ptrdiff_t>& mirror = shape.symmetries[2].mirror;
+  const auto mirror_map = boost::make_iterator_property_map(mirror.begin(), get(boost::vertex_index, tm));
+  Pairs kept;
+  IRS::pairs_consistent_with_map(tm, D, mirror_map, mixed, std::back_inserter(kept));
+  const double tolerance = IRS::consistent_pair_tolerance * std::sqrt(CGAL::Polygon_mesh_processing::area(tm));
+  std::size_t kept_mirror = 0;
+  for(const auto& pr : kept)
+  {
+    EXPECT_LE(D(pr.second, std::size_t(mirror[samples[pr.first]])), tolerance);
+    EXPECT_LE(D(pr.first, std::size_t(mirror[samples[pr.second]])), tolerance);
+    kept_mirror += std::find(mirror_pairs.begin(), mirror_pairs.end(), pr) != mirror_pairs.end();
+  }
+  // the literal definition over all pairs gives the same list
+  std::size_t expected = 0;
+  for(const auto& pr : mixed)
+    expected += D(pr.second, std::size_t(mirror[samples[pr.first]])) <= tolerance &&
+                D(pr.first, std::size_t(mirror[samples[pr.second]])) <= tolerance;
+  EXPECT_EQ(kept.size(), expected);
+  std::cout << "[ capsule ] " << kept.size() << " of " << mixed.size() << " pairs kept, " << kept_mirror << " of the "
+            << mirror_pairs.size() << " mirror pairs" << std::endl;
+  EXPECT_GE(double(kept_mirror), 0.95 * double(mirror_pairs.size()));
+  EXPECT_LE(double(kept.size() - kept_mirror), 0.05 * double(mixed.size() - mirror_pairs.size()));
+
+  // bad input: a pair naming no sample, a distance matrix of another mesh
+  // and a partner out of range are named
+  expect_input_error(
+    [&] {
+      Pairs out;
+      IRS::pairs_consistent_with_map(tm, D, mirror_map, Pairs{{0, samples.size()}}, std::back_inserter(out));
+    },
+    IRS::Input_problem::invalid_parameter, "sources");
+  const auto other = IRS::generate_capsule<Mesh>(800);
+  expect_input_error(
+    [&] {
+      Pairs out;
+      IRS::pairs_consistent_with_map(other.mesh, D, mirror_map, mixed, std::back_inserter(out));
+    },
+    IRS::Input_problem::invalid_parameter, "columns");
+  std::vector<std::ptrdiff_t> bad(num_vertices(tm), 0);
+  bad[samples[0]] = std::ptrdiff_t(num_vertices(tm));
+  expect_input_error(
+    [&] {
+      Pairs out;
+      IRS::pairs_consistent_with_map(tm, D, boost::make_iterator_property_map(bad.begin(), get(boost::vertex_index, tm)),
+                                     mixed, std::back_inserter(out));
+    },
+    IRS::Input_problem::invalid_parameter, "partner");
+  std::vector<std::ptrdiff_t> partner(num_vertices(tm));
+  expect_input_error(
+    [&] {
+      IRS::global_reflection_map(tm, std::vector<std::size_t>{0, num_vertices(tm)},
+                                 boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, tm)));
+    },
+    IRS::Input_problem::invalid_parameter, "sample 1");
+  // too few samples for the last ZoomOut size: no map, every partner -1
+  EXPECT_FALSE(IRS::global_reflection_map(tm, std::vector<std::size_t>(samples.begin(), samples.begin() + 20),
+                                          boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, tm))));
+  EXPECT_TRUE(std::all_of(partner.begin(), partner.end(), [](std::ptrdiff_t p) { return p == -1; }));
+}
+
+// The vote guided by the global reflection (what irsym --tries runs when
+// every try is suspect): the stick figure's SDF signatures pair its limbs in
+// many ways, but with the pairs the global reflection swaps the top curve
+// lies on that reflection's axis and the map follows it.
+TEST(Curves, GuidedVoteFollowsTheGlobalReflection)
+{
+  const auto shape = IRS::generate_stick_figure<Mesh>(3000);
+  const Mesh& tm = shape.mesh;
+  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(tm);
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(tm, IRS::parameters::number_of_samples(std::size_t(500)).random_seed(1u));
+  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  std::vector<std::ptrdiff_t> global(num_vertices(tm), -1);
+  const auto global_map = boost::make_iterator_property_map(global.begin(), get(boost::vertex_index, tm));
+  ASSERT_TRUE(IRS::global_reflection_map(tm, samples, global_map));
+  const IRS::Sdf_signatures sig = IRS::compute_sdf_signatures(tm, D);
+  Pairs similar, swapped;
+  IRS::similar_sample_pairs(sig, std::back_inserter(similar));
+  IRS::pairs_consistent_with_map(tm, D, global_map, similar, std::back_inserter(swapped));
+  ASSERT_FALSE(swapped.empty());
+  auto tau = get(CGAL::dynamic_vertex_property_t<double>(), tm);
+  const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(tm, D, swapped, tau);
+  std::vector<IRS::Irsa_curve> curves;
+  IRS::extract_irsa_curves(tm, D, voting, tau, std::back_inserter(curves));
+  ASSERT_FALSE(curves.empty());
+  std::vector<std::ptrdiff_t> partner(num_vertices(tm), -1);
+  std::vector<int> region(num_vertices(tm), -1);
+  IRS::symmetric_vertex_map(tm, D, curves, boost::make_iterator_property_map(partner.begin(), get(boost::vertex_index, tm)),
+                            IRS::parameters::vertex_region_map(
+                              boost::make_iterator_property_map(region.begin(), get(boost::vertex_index, tm))));
+  // the symmetry the global map follows
+  const std::vector<Point> pts = vertex_points(tm);
+  const std::vector<int> everywhere(pts.size(), 0);
+  std::size_t k = 0;
+  double best = 0.;
+  for(std::size_t s = 0; s < shape.symmetries.size(); ++s)
+  {
+    const double share = map_quality(pts, global, everywhere, 0, shape.symmetries[s], 2. * shape.mean_edge_length).share();
+    if(share > best) { best = share; k = s; }
+  }
+  const IRS::Known_symmetry& sym = shape.symmetries[k];
+  const double to_axis = curve_to_axis(pts, curves[0], sym.axis);
+  const Map_quality q = map_quality(pts, partner, region, 0, sym, 2. * shape.mean_edge_length);
+  std::cout << "[ stick figure ] " << swapped.size() << " of " << similar.size() << " similar pairs swapped by the global "
+            << "reflection (~ " << sym.name << "); top curve " << to_axis / shape.mean_edge_length
+            << " edges from its axis; region 0: " << q.region_vertices << " vertices, " << 100. * q.share()
+            << " % within 2 edges of the mirror" << std::endl;
+  EXPECT_LE(to_axis, 2. * shape.mean_edge_length);
+  EXPECT_GE(q.region_vertices, pts.size() / 2);
+  EXPECT_GE(q.share(), 0.95);
+
+  // the map started from the global reflection (initial_vertex_map, as the
+  // guided run of irsym --tries): as right, and the start is checked
+  std::vector<std::ptrdiff_t> started(num_vertices(tm), -1);
+  IRS::symmetric_vertex_map(tm, D, curves, boost::make_iterator_property_map(started.begin(), get(boost::vertex_index, tm)),
+                            IRS::parameters::vertex_region_map(
+                              boost::make_iterator_property_map(region.begin(), get(boost::vertex_index, tm)))
+                              .initial_vertex_map(global_map));
+  const Map_quality qs = map_quality(pts, started, region, 0, sym, 2. * shape.mean_edge_length);
+  std::cout << "[ stick figure ] map started from the global reflection: " << 100. * qs.share()
+            << " % within 2 edges of the mirror" << std::endl;
+  EXPECT_GE(qs.share(), 0.95);
+  std::vector<std::ptrdiff_t> bad = global;
+  bad[7] = std::ptrdiff_t(num_vertices(tm));
+  expect_input_error(
+    [&] {
+      IRS::symmetric_vertex_map(tm, D, curves,
+                                boost::make_iterator_property_map(started.begin(), get(boost::vertex_index, tm)),
+                                IRS::parameters::initial_vertex_map(
+                                  boost::make_iterator_property_map(bad.begin(), get(boost::vertex_index, tm))));
+    },
+    IRS::Input_problem::invalid_parameter, "initial_vertex_map");
 }
 
 // ---------------------------------------------------------------- determinism, genericity

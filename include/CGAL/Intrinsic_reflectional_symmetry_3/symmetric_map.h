@@ -12,6 +12,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/parameters.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_mesh.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/global_reflection.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/symmetric_map_dense.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -87,6 +88,24 @@ void symmetric_map_setup(const TriangleMesh& tm, const Geodesic_distance_matrix&
   check_voting_parameter(functions >= 0. && functions <= 1000.,
                          "number_of_eigenfunctions must be in [0, 1000]");
   rs.eigenfunctions = std::size_t(functions);
+  rs.initial_map.clear();
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, inp::initial_vertex_map_t>::value)
+  {
+    const auto initial = get_parameter(np, inp::initial_vertex_map);
+    const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+    rs.initial_map.assign(m.number_of_vertices, Curves_mesh::none);
+    for(auto v : vertices(tm))
+    {
+      const long long p = static_cast<long long>(get(initial, v));
+      const std::size_t i = std::size_t(get(vim, v));
+      if(p < -1 || p >= static_cast<long long>(m.number_of_vertices))
+        throw Input_error(Input_problem::invalid_parameter,
+                          "initial_vertex_map: vertex " + std::to_string(i) + " has partner " + std::to_string(p) +
+                          ": not -1 nor a vertex index of the mesh (" + std::to_string(m.number_of_vertices) +
+                          " vertices)", i);
+      if(p >= 0) rs.initial_map[i] = std::size_t(p);
+    }
+  }
 }
 
 /// the shared first step of `symmetric_regions()` and `symmetric_vertex_map()`:
@@ -372,6 +391,16 @@ std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance
 ///     \cgalParamType{std::size_t in [0, 1000]}
 ///     \cgalParamDefault{150}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{initial_vertex_map}
+///     \cgalParamDescription{a map that replaces the landmark match at every vertex whose partner in it
+///       lies in the same region, and then is not refined spectrally (it is meant to be a ZoomOut map
+///       already): the whole shape's reflection of `global_reflection_map()`, which is right on posed
+///       shapes where the landmarks of a curve carry the pose's distortion (what `irsym --tries` passes
+///       to its guided run)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the vertex descriptor as key and a signed
+///       integral value type: the partner's vertex index, or -1 (none)}
+///     \cgalParamDefault{none: the landmark match}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{symmetry_tolerance}
 ///     \cgalParamDescription{the reflection holds at a vertex when the residual of its mirror partner is
 ///       at most this factor times the distance tolerance below; looser than the extraction's 1.0, which
@@ -582,6 +611,160 @@ inline double symmetric_map_defect(double share, double distortion)
   return distortion + 0.3 * share;
 }
 
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// The whole shape's intrinsic reflection, from its Laplace spectrum alone
+/// (no curves): an intrinsic symmetry maps each simple eigenfunction to
+/// +-itself (Ovsjanikov, Sun and Guibas 2008). Each of the 63 sign patterns of
+/// the first six non-constant eigenfunctions of the cotangent Laplacian starts
+/// a ZoomOut (Melzi et al. 2019) on `samples`, up to 31 functions; the map
+/// kept holds at most a tenth of the samples in place (within 0.03
+/// `sqrt(area)`) and, among those, has the functional map closest to diagonal.
+/// It is a candidate for when the curves miss the main axis: the sample pairs
+/// it swaps (`pairs_consistent_with_map()`) can vote again
+/// (`compute_irsa_transform()`), which is what `irsym --tries` does when every
+/// try's map is suspect (`is_suspect_symmetric_map()`). A shape with several
+/// global reflections (a box) gets one of them; a shape without any gets the
+/// least bad map, which the checks of a symmetric map judge as any other.
+///
+/// Measured on SCAPE's posed meshes mesh016, 044 and 064 (1000 farthest-point
+/// samples of seed 0), see the manual: the left-right map where the curves of
+/// every seed miss it.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+/// \tparam SampleRange a range of vertex indices (as from `farthest_point_samples()`)
+/// \tparam VertexPartnerMap a model of `WritablePropertyMap` with the vertex
+///         descriptor as key and a signed integral value type
+///
+/// \param tm the mesh (read only; one connected component: a spectrum of
+///        several has several constant functions and no meaningful pattern)
+/// \param samples the vertices ZoomOut iterates on, spread evenly; at least 62
+///        of them on faces
+/// \param partner receives the partner's vertex index for every vertex, or -1
+///        (vertices on no face, and every vertex when no map is found)
+/// \param np optional named parameters: `vertex_point_map`, `vertex_index_map`
+///        and `face_index_map`, as for `symmetric_vertex_map()`
+///
+/// \returns whether a map was found (false where the eigensolver fails, there
+///          are too few samples, or every pattern's map holds more than a tenth
+///          of the samples in place)
+/// \throws Input_error (`invalid_parameter`) if a sample is not a vertex index of `tm`
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh, typename SampleRange,
+          typename VertexPartnerMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+bool global_reflection_map(const TriangleMesh& tm, const SampleRange& samples, VertexPartnerMap partner,
+                           const CGAL_NP_CLASS& np = parameters::default_values())
+{
+  const internal::Curves_mesh m = internal::make_curves_mesh(tm, np);
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  std::vector<std::size_t> sample_vertices;
+  for(const auto s : samples)
+  {
+    const std::size_t v = std::size_t(s);
+    if(v >= m.number_of_vertices)
+      throw Input_error(Input_problem::invalid_parameter,
+                        "sample " + std::to_string(sample_vertices.size()) + " is vertex " + std::to_string(v) +
+                        " but the mesh has " + std::to_string(m.number_of_vertices) + " vertices",
+                        sample_vertices.size());
+    sample_vertices.push_back(v);
+  }
+  const internal::Global_reflection g = internal::global_reflection<ConcurrencyTag>(m, sample_vertices);
+  typedef typename boost::property_traits<VertexPartnerMap>::value_type Value;
+  for(auto v : vertices(tm))
+  {
+    const std::size_t i = std::size_t(get(vim, v));
+    const bool mapped = g.found && g.partner[i] != internal::Curves_mesh::none;
+    put(partner, v, static_cast<Value>(mapped ? static_cast<long long>(g.partner[i]) : -1ll));
+  }
+  return g.found;
+}
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// How near, as a share of `sqrt(area)`, a sample must be to the image of the
+/// other sample of its pair for `pairs_consistent_with_map()` to keep the pair:
+/// about twice the spacing of 1000 farthest-point samples (0.035), and below
+/// the tolerance of the correspondence rate of Kim et al. 2010 (0.126).
+constexpr double consistent_pair_tolerance = 0.08;
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// The sample pairs that a vertex map swaps: of `pairs` (indices of samples,
+/// the sources of `D`, as from `similar_sample_pairs()`), each pair {i, j}
+/// whose sample j lies within `consistent_pair_tolerance` `sqrt(area)` of the
+/// image of sample i along the surface (`D`), and sample i of the image of j.
+/// With the map of `global_reflection_map()`, the pairs left vote for that
+/// reflection's axis alone (`compute_irsa_transform()`).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+/// \tparam VertexPartnerMap a model of `ReadablePropertyMap` with the vertex
+///         descriptor as key and a signed integral value type (vertex index, or -1)
+/// \tparam PairRange a range of `std::pair<std::size_t, std::size_t>`
+/// \tparam OutputIterator an output iterator accepting those pairs
+///
+/// \param tm the mesh (read only)
+/// \param D the geodesic distances from the samples to every vertex of `tm`
+/// \param partner the image of every vertex, or -1 (a pair with an unmapped sample is dropped)
+/// \param pairs the candidate pairs
+/// \param out receives the pairs kept, in the order of `pairs`
+/// \param np optional named parameters: `vertex_point_map`, `vertex_index_map`
+///        and `face_index_map`, as for `symmetric_vertex_map()`
+///
+/// \returns the output iterator past the last pair written
+/// \throws Input_error (`invalid_parameter`) if `D` does not match `tm`, a
+///         pair names no sample of `D`, or a partner is not a vertex index of `tm`
+template <typename TriangleMesh, typename VertexPartnerMap, typename PairRange, typename OutputIterator,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
+OutputIterator pairs_consistent_with_map(const TriangleMesh& tm, const Geodesic_distance_matrix& D,
+                                         VertexPartnerMap partner, const PairRange& pairs, OutputIterator out,
+                                         const CGAL_NP_CLASS& np = parameters::default_values())
+{
+  const internal::Curves_mesh m = internal::make_curves_mesh(tm, np);
+  const std::size_t n = m.number_of_vertices;
+  if(D.number_of_vertices() != n)
+    throw Input_error(Input_problem::invalid_parameter,
+                      "the distance matrix has " + std::to_string(D.number_of_vertices()) +
+                      " columns but the mesh has " + std::to_string(n) + " vertices");
+  const std::vector<long long> image =
+    internal::read_partners(tm, partner, CGAL::get_initialized_vertex_index_map(tm, np), n);
+  const double tolerance = consistent_pair_tolerance * std::sqrt(m.area);
+  const std::size_t ns = D.number_of_sources();
+  std::size_t index = 0;
+  for(const auto& pair : pairs)
+  {
+    const std::size_t i = std::size_t(pair.first), j = std::size_t(pair.second);
+    if(i >= ns || j >= ns)
+      throw Input_error(Input_problem::invalid_parameter,
+                        "pair " + std::to_string(index) + " names sample " + std::to_string((std::max)(i, j)) +
+                        " but the distance matrix has " + std::to_string(ns) + " sources", index);
+    ++index;
+    const long long mi = image[D.sources()[i]], mj = image[D.sources()[j]];
+    if(mi < 0 || mj < 0) continue;
+    if(D(j, std::size_t(mi)) <= tolerance && D(i, std::size_t(mj)) <= tolerance) *out++ = pair;
+  }
+  return out;
+}
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// The `isometric_distortion()` up to which a guided run (voted and mapped
+/// after the whole shape's reflection, `global_reflection_map()`) replaces
+/// a suspect map even where its `symmetric_map_defect()` is higher. On a
+/// posed shape a right map is no isometry either, and the distortion does
+/// not rank two maps that are both nearly right: measured on SCAPE
+/// (`symmetry_map_benchmark --log-runs`, seed 0, 1000 samples), the global
+/// reflection's maps lie at 0.037-0.076 with 82-100 % CR on the posed
+/// meshes (guided runs up to 0.086), the tries' maps of the same meshes at
+/// 0.034-0.068 with 57-95 % CR (the ground truth itself at 0.036-0.069),
+/// and the maps that are wrong nearly everywhere (18-41 % CR) at
+/// 0.125-0.148: the bound lies in that gap.
+constexpr double guided_run_max_distortion = 0.1;
+
+/// Whether a guided run (shares and distortions as in `is_suspect_symmetric_map()`)
+/// replaces the map kept from the tries, all of them suspect: where it has the
+/// lower `symmetric_map_defect()`, or where it holds no part in place (share at most
+/// `suspect_fixed_point_share`) and its distortion is at most `guided_run_max_distortion`.
+inline bool keeps_guided_run(double guided_share, double guided_distortion, double kept_share, double kept_distortion)
+{
+  return symmetric_map_defect(guided_share, guided_distortion) < symmetric_map_defect(kept_share, kept_distortion) ||
+         (guided_share <= suspect_fixed_point_share && guided_distortion <= guided_run_max_distortion);
+}
+
 namespace internal {
 
 /// What `best_of_tries()` keeps.
@@ -592,6 +775,8 @@ struct Tries_outcome
   int runs = 0;            // runs completed
   bool stopped = false;    // a later run was cancelled (its callback said stop)
   std::string stop_message; // what() of that Operation_cancelled
+  bool guided_tried = false; // a run guided by the global reflection completed
+  bool guided_kept = false;  // and was kept
 };
 
 /// The retry rule of `irsym --tries` and `symmetry_map_benchmark --tries`:
@@ -603,8 +788,14 @@ struct Tries_outcome
 /// (`Operation_cancelled`, a time limit) after an earlier run completed ends
 /// the loop with the best completed run (`stopped`): the time spent is not
 /// wasted. A cancelled first run, and any other exception, propagate.
-template <class Run, class RunSeed>
-Tries_outcome<Run> best_of_tries(RunSeed&& run, unsigned first_seed, int tries)
+/// When the map kept is still suspect (and no run was cancelled),
+/// `guided(kept, g)` may run the pipeline again guided by the global
+/// reflection (`global_reflection_map()`, `pairs_consistent_with_map()`),
+/// write it to `g` and return true; `g` then replaces the map kept if
+/// `keeps_guided_run()`. A guided run cancelled by its callback
+/// leaves the map kept (`stopped`).
+template <class Run, class RunSeed, class RunGuided>
+Tries_outcome<Run> best_of_tries(RunSeed&& run, unsigned first_seed, int tries, RunGuided&& guided)
 {
   Tries_outcome<Run> out;
   for(int t = 0; t < tries; ++t)
@@ -628,7 +819,39 @@ Tries_outcome<Run> best_of_tries(RunSeed&& run, unsigned first_seed, int tries)
       out.kept = std::move(r);
     if(!suspect) break;
   }
+  // every try suspect: the pipeline once more, on the kept run's samples,
+  // with the votes of the pairs that the global reflection swaps
+  if(!out.stopped && out.runs > 0 && is_suspect_symmetric_map(out.kept.fixed_share, out.kept.distortion))
+  {
+    Run g;
+    bool completed = false;
+    try
+    {
+      completed = guided(static_cast<const Run&>(out.kept), g);
+    }
+    catch(const Operation_cancelled& e)
+    {
+      out.stopped = true;
+      out.stop_message = e.what();
+    }
+    if(completed)
+    {
+      out.guided_tried = true;
+      if(keeps_guided_run(g.fixed_share, g.distortion, out.kept.fixed_share, out.kept.distortion))
+      {
+        out.kept = std::move(g);
+        out.guided_kept = true;
+      }
+    }
+  }
   return out;
+}
+
+/// `best_of_tries()` without the guided run
+template <class Run, class RunSeed>
+Tries_outcome<Run> best_of_tries(RunSeed&& run, unsigned first_seed, int tries)
+{
+  return best_of_tries<Run>(std::forward<RunSeed>(run), first_seed, tries, [](const Run&, Run&) { return false; });
 }
 
 } // namespace internal

@@ -210,10 +210,11 @@ void nearest_rows(const Eigen::MatrixXd& P, const Eigen::MatrixXd& C, const std:
 /// |subset| x rows x k per size; the samples of the region, spread evenly,
 /// determine C as well as all rows do (all rows are used when the subset
 /// has fewer than 2 k1 rows).
+/// With `last_map`, the C of the last size is written there.
 template <class ConcurrencyTag>
 void zoomout(const Region_spectrum& s, std::size_t k0, std::size_t k1, std::size_t step,
              const std::vector<std::size_t>& subset, std::vector<std::size_t>& image,
-             const std::vector<signed char>* side = nullptr)
+             const std::vector<signed char>* side = nullptr, Eigen::MatrixXd* last_map = nullptr)
 {
   const std::size_t n = s.rows.size();
   k1 = (std::min)(k1, std::size_t(s.basis.cols()));
@@ -238,7 +239,11 @@ void zoomout(const Region_spectrum& s, std::size_t k0, std::size_t k1, std::size
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(C, Eigen::ComputeFullU | Eigen::ComputeFullV);
     C = svd.matrixU() * svd.matrixV().transpose();
     nearest_rows<ConcurrencyTag>(P, C, k == k1 ? all : rows, image, side);
-    if(k == k1) break;
+    if(k == k1)
+    {
+      if(last_map != nullptr) *last_map = C;
+      break;
+    }
   }
 }
 

@@ -292,6 +292,28 @@ foreach(f symmetric_map.txt curves.txt regions.txt samples.txt)
   endif()
 endforeach()
 
+# 2d. the guided run: with --tries 1 the suspect map of seed 0 (above) is the
+# only try, so the tool runs once more on its samples, voting with the pairs
+# that the global reflection (global_reflection_map()) swaps and mapping from
+# it; that map (the two snowmen swapped end to end) holds nothing in place
+# and is kept
+run(0 --shape two_snowmen --samples 300 --tries 1 --threads 2 --out ${WORK_DIR}/guided)
+file(READ ${WORK_DIR}/guided/report.json guided_report)
+string(JSON gtries ERROR_VARIABLE gerr LENGTH "${guided_report}" results tries)
+string(JSON gflag ERROR_VARIABLE gerr1 GET "${guided_report}" results tries 1 guided)
+string(JSON gshare ERROR_VARIABLE gerr2 GET "${guided_report}" results tries 1 fixed_point_share)
+string(JSON gkept ERROR_VARIABLE gerr3 GET "${guided_report}" results guided)
+string(JSON gsuspect ERROR_VARIABLE gerr4 GET "${guided_report}" results map_suspect)
+if(gerr OR gerr1 OR gerr2 OR gerr3 OR gerr4 OR NOT gtries EQUAL 2 OR NOT gflag STREQUAL "ON"
+   OR gshare GREATER 0.1 OR NOT gkept STREQUAL "ON" OR NOT gsuspect STREQUAL "OFF")
+  message(FATAL_ERROR "--tries 1 on the two snowmen at 300 samples: ${gtries} runs, the second guided '${gflag}' "
+                      "with share '${gshare}', guided kept '${gkept}', map_suspect '${gsuspect}'; expected a "
+                      "guided second run holding nothing in place, kept ${gerr}${gerr1}${gerr2}${gerr3}${gerr4}")
+endif()
+if(NOT last_err MATCHES "voting again on the samples of seed 0")
+  message(FATAL_ERROR "--tries 1 on the two snowmen: no message for the guided run: ${last_err}")
+endif()
+
 # 3. bad input: exit 2 and a message naming the problem
 file(WRITE ${WORK_DIR}/quad.off "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
 run(2 ${WORK_DIR}/quad.off --out ${WORK_DIR}/bad)

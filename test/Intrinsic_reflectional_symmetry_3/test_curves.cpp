@@ -1649,16 +1649,21 @@ TEST(Curves, GuidedVoteFollowsTheGlobalReflection)
   EXPECT_GE(q.share(), 0.95);
 
   // the map started from the global reflection (initial_vertex_map, as the
-  // guided run of irsym --tries): as right, and the start is checked
+  // guided run of irsym --tries): not refined spectrally, so about as right
+  // as the global reflection itself (a map of 31 functions: 93.5 % within
+  // 2 edges over the whole figure, 94.9 % in the region); the start is checked
   std::vector<std::ptrdiff_t> started(num_vertices(tm), -1);
   IRS::symmetric_vertex_map(tm, D, curves, boost::make_iterator_property_map(started.begin(), get(boost::vertex_index, tm)),
                             IRS::parameters::vertex_region_map(
                               boost::make_iterator_property_map(region.begin(), get(boost::vertex_index, tm)))
                               .initial_vertex_map(global_map));
   const Map_quality qs = map_quality(pts, started, region, 0, sym, 2. * shape.mean_edge_length);
+  const Map_quality qg = map_quality(pts, global, region, 0, sym, 2. * shape.mean_edge_length);
   std::cout << "[ stick figure ] map started from the global reflection: " << 100. * qs.share()
-            << " % within 2 edges of the mirror" << std::endl;
-  EXPECT_GE(qs.share(), 0.95);
+            << " % within 2 edges of the mirror (the global reflection there: " << 100. * qg.share() << " %)"
+            << std::endl;
+  EXPECT_GE(qs.share(), 0.9);
+  EXPECT_GE(qs.share(), qg.share() - 0.01);
   std::vector<std::ptrdiff_t> bad = global;
   bad[7] = std::ptrdiff_t(num_vertices(tm));
   expect_input_error(

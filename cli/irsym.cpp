@@ -94,10 +94,12 @@ usage: irsym MESH --out DIR [options]
                        seed S alone). When every run's map is suspect, one more run on the
                        samples of the map kept lets only the sample pairs vote that the
                        shape's global reflection swaps (global_reflection_map(), from the
-                       Laplace spectrum); its map replaces the kept one if less defective
-                       (results.guided). Measured: no second run on FAUST's 19 humans, 2.6
-                       runs per mesh on SCAPE's 18 (seed 2; 5 instead of 3: +0.8 to +1.6
-                       points of correspondence rate there, over three seeds)
+                       Laplace spectrum); its map replaces the kept one if less defective, or
+                       if it holds nothing in place with a distortion of at most 0.1
+                       (keeps_guided_run(); results.guided). Measured: no second run on
+                       FAUST's 19 humans, 2.6 runs per mesh on SCAPE's 18 (seed 2; 5
+                       instead of 3: +0.8 to +1.6 points of correspondence rate there,
+                       over three seeds)
   --geodesics G        geodesic oracle: heat (default), exact or dijkstra
   --threads T          worker threads (default: all cores); results do not depend on it
   --target-vertices N  first remesh or decimate to about N vertices (default: keep the mesh)

@@ -66,7 +66,7 @@
 //             suspect, or else the one of least dist + 0.3 fixed share; when every
 //             run is suspect, one more run on the kept run's samples votes with
 //             the pairs that the global reflection swaps (global_reflection_map())
-//             and is kept if less defective (seed column "Sg"); columns seed (of
+//             and is kept where keeps_guided_run() says (seed column "Sg"); columns seed (of
 //             the run kept) and runs; total s sums the runs, the other times
 //             are those of the run kept
 //   DIR       write NAME.map (partner per vertex, -1 for none) and
@@ -187,15 +187,16 @@ auto map_parameters(const Options& o)
   return IRS::parameters::distance_threshold(o.distance).symmetry_tolerance(o.region_tolerance);
 }
 
-// the package's pipeline with its defaults; only the number of samples and the
-// seed are set. The vertex SDF and areas, which do not depend on the samples,
-// come from run_pipeline(), once for all runs, as in irsym
-// a vertex map by vertex index as a property map of Mesh
-auto global_map_property(const std::vector<std::ptrdiff_t>& map)
+// a vertex map (by vertex index) as a property map of `m`, writable if `map` is
+template <typename VertexMap>
+auto vertex_map_property(const Mesh& m, VertexMap& map)
 {
-  return boost::make_iterator_property_map(map.begin(), get(boost::vertex_index, Mesh()));
+  return boost::make_iterator_property_map(map.begin(), get(boost::vertex_index, m));
 }
 
+// the package's pipeline with its defaults; only the number of samples and the
+// seed are set. The vertex SDF and areas, which do not depend on the samples,
+// come from run_pipeline(), once for all runs, as in irsym.
 // With `global_map`, the run reuses the samples and distances of `guided_by`
 // and only the similar pairs that the map swaps vote (as irsym --tries)
 Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::vector<double>& vertex_sdf,
@@ -230,9 +231,7 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   if(guided)
   {
     std::vector<std::pair<std::size_t, std::size_t>> swapped;
-    IRS::pairs_consistent_with_map(
-      m, D, boost::make_iterator_property_map(global_map->begin(), get(boost::vertex_index, m)), similar,
-      std::back_inserter(swapped));
+    IRS::pairs_consistent_with_map(m, D, vertex_map_property(m, *global_map), similar, std::back_inserter(swapped));
     similar.swap(swapped);
   }
   r.similar_pairs = similar.size();
@@ -254,7 +253,7 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   if(guided)
     IRS::symmetric_vertex_map(m, D, r.curves, partner,
                               map_parameters(o).vertex_region_map(map_region).initial_vertex_map(
-                                global_map_property(*global_map)));
+                                vertex_map_property(m, *global_map)));
   else
     IRS::symmetric_vertex_map(m, D, r.curves, partner, map_parameters(o).vertex_region_map(map_region));
   auto region = get(CGAL::dynamic_face_property_t<int>(), m);
@@ -269,6 +268,20 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   return r;
 }
 
+// --log-runs: a map that is no run of the pipeline (the global reflection),
+// judged as a run of seed `seed` whose curves are `curves`
+void log_map(const Options& o, const Mesh& m, const std::string& what, unsigned seed,
+             const std::vector<IRS::Irsa_curve>& curves, std::vector<std::ptrdiff_t> partner)
+{
+  Pipeline_result map;
+  map.seed = seed;
+  map.partner = std::move(partner);
+  map.fixed_share = IRS::fixed_point_share(m, curves, vertex_map_property(m, map.partner));
+  map.distortion = IRS::isometric_distortion(m, vertex_map_property(m, map.partner));
+  std::cerr << "  (" << what << ")";
+  log_run(o, m, map);
+}
+
 // --log-runs: the global reflection on the samples of `r`, alone and refined
 // by ZoomOut up to 150 functions on the whole mesh
 void log_global_reflection(const Options& o, const Mesh& m, const Pipeline_result& r)
@@ -277,27 +290,19 @@ void log_global_reflection(const Options& o, const Mesh& m, const Pipeline_resul
   const IRS::internal::Global_reflection g =
     IRS::internal::global_reflection<CGAL::Parallel_if_available_tag>(cm, r.D.sources());
   if(!g.found) { std::cerr << "  no global reflection\n"; return; }
-  Pipeline_result global;
-  global.seed = r.seed;
-  auto as_partner = [&](const std::vector<std::size_t>& p) {
+  auto as_partner = [](const std::vector<std::size_t>& p) {
     std::vector<std::ptrdiff_t> out(p.size(), -1);
     for(std::size_t v = 0; v < p.size(); ++v) if(p[v] != IRS::internal::Curves_mesh::none) out[v] = std::ptrdiff_t(p[v]);
     return out;
   };
-  global.partner = as_partner(g.partner);
-  global.fixed_share = IRS::fixed_point_share(m, r.curves, global_map_property(global.partner));
-  global.distortion = IRS::isometric_distortion(m, global_map_property(global.partner));
-  std::cerr << "  (global reflection, pattern " << g.pattern << ", off-diagonal " << g.off_diagonal_share << ")";
-  log_run(o, m, global);
+  std::ostringstream what;
+  what << "global reflection, pattern " << g.pattern << ", off-diagonal " << g.off_diagonal_share;
+  log_map(o, m, what.str(), r.seed, r.curves, as_partner(g.partner));
   std::vector<std::size_t> verts(cm.number_of_vertices), refined = g.partner;
   std::iota(verts.begin(), verts.end(), std::size_t(0));
   IRS::internal::spectral_refinement<CGAL::Parallel_if_available_tag>(
     cm, r.D.sources(), verts, std::vector<unsigned char>(cm.number_of_vertices, 1), 150, refined);
-  global.partner = as_partner(refined);
-  global.fixed_share = IRS::fixed_point_share(m, r.curves, global_map_property(global.partner));
-  global.distortion = IRS::isometric_distortion(m, global_map_property(global.partner));
-  std::cerr << "  (global reflection refined)";
-  log_run(o, m, global);
+  log_map(o, m, "global reflection refined", r.seed, r.curves, as_partner(refined));
 }
 
 // as irsym --tries (the package's retry rule, internal::best_of_tries()):
@@ -325,19 +330,8 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
       CGAL::Real_timer tg;
       tg.start();
       std::vector<std::ptrdiff_t> global_map(num_vertices(m), -1);
-      if(!IRS::global_reflection_map(m, suspect_run.D.sources(),
-                                     boost::make_iterator_property_map(global_map.begin(), get(boost::vertex_index, m))))
-        return false;
-      if(o.log_runs)
-      {
-        Pipeline_result global;
-        global.seed = suspect_run.seed;
-        global.partner = global_map;
-        global.fixed_share = IRS::fixed_point_share(m, suspect_run.curves, global_map_property(global_map));
-        global.distortion = IRS::isometric_distortion(m, global_map_property(global_map));
-        std::cerr << "  (the global reflection itself)";
-        log_run(o, m, global);
-      }
+      if(!IRS::global_reflection_map(m, suspect_run.D.sources(), vertex_map_property(m, global_map))) return false;
+      if(o.log_runs) log_map(o, m, "the global reflection itself", suspect_run.seed, suspect_run.curves, global_map);
       Options run = o;
       run.seed = suspect_run.seed;
       g = run_pipeline_once(m, run, vertex_sdf, vertex_areas, &suspect_run, &global_map);

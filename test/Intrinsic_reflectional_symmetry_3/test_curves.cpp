@@ -1457,56 +1457,65 @@ TEST(Curves, BentCapsuleGivesItsIntrinsicAxis)
 // the bent capsule (measured: 44.5 % of the vertices within the bound of
 // the half turn, 3.1 % of its end-to-end reflection), a thin tube nearly
 // invariant under turns about its axis, which 31 functions do not resolve.
+// heat-method distances from `n` farthest-point samples (seed 1)
+IRS::Geodesic_distance_matrix distances_from_samples(const Mesh& tm, std::size_t n)
+{
+  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(tm);
+  return IRS::compute_geodesic_distance_matrix(
+    oracle, IRS::farthest_point_samples(tm, IRS::parameters::number_of_samples(n).random_seed(1u)));
+}
+
+// the index of the symmetry whose mirror `partner` follows at most vertices
+// (map_quality() over the whole mesh), and that share
+std::pair<std::size_t, double> best_matching_symmetry(const std::vector<Point>& pts,
+                                                      const std::vector<std::ptrdiff_t>& partner,
+                                                      const std::vector<IRS::Known_symmetry>& symmetries,
+                                                      double tolerance)
+{
+  const std::vector<int> everywhere(pts.size(), 0);
+  std::pair<std::size_t, double> best(0, 0.);
+  for(std::size_t k = 0; k < symmetries.size(); ++k)
+  {
+    const double share = map_quality(pts, partner, everywhere, 0, symmetries[k], tolerance).share();
+    if(share > best.second) best = std::make_pair(k, share);
+  }
+  return best;
+}
+
 TEST(Curves, GlobalReflectionFollowsAKnownSymmetry)
 {
-  struct Case
+  const auto shape = IRS::generate_stick_figure<Mesh>(3000);
+  const Mesh& tm = shape.mesh;
+  const double e = shape.mean_edge_length;
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(tm, IRS::parameters::number_of_samples(std::size_t(400)).random_seed(1u));
+  std::vector<std::ptrdiff_t> partner(num_vertices(tm), -2);
+  ASSERT_TRUE(IRS::global_reflection_map(tm, samples, boost::make_iterator_property_map(partner.begin(),
+                                                                                        get(boost::vertex_index, tm))));
+  const std::vector<Point> pts = vertex_points(tm);
+  std::size_t fixed = 0;
+  for(std::size_t v = 0; v < pts.size(); ++v)
   {
-    std::string name;
-    IRS::Generated_shape<Mesh> shape;
-    double distortion; // as in map_quality()
-  };
-  const std::vector<Case> cases{{"stick figure", IRS::generate_stick_figure<Mesh>(3000), 0.}};
-  for(const Case& c : cases)
-  {
-    SCOPED_TRACE(c.name);
-    const Mesh& tm = c.shape.mesh;
-    const std::vector<std::size_t> samples =
-      IRS::farthest_point_samples(tm, IRS::parameters::number_of_samples(std::size_t(400)).random_seed(1u));
-    std::vector<std::ptrdiff_t> partner(num_vertices(tm), -2);
-    ASSERT_TRUE(IRS::global_reflection_map(tm, samples, boost::make_iterator_property_map(partner.begin(),
-                                                                                          get(boost::vertex_index, tm))));
-    const std::vector<Point> pts = vertex_points(tm);
-    const std::vector<int> everywhere(pts.size(), 0);
-    double best = 0.;
-    std::string best_name;
-    std::size_t fixed = 0;
-    for(std::size_t v = 0; v < pts.size(); ++v)
-    {
-      ASSERT_GE(partner[v], 0) << "every vertex lies on a face";
-      ASSERT_LT(partner[v], std::ptrdiff_t(pts.size()));
-      fixed += distance(pts[v], pts[std::size_t(partner[v])]) < 2. * c.shape.mean_edge_length;
-    }
-    std::vector<IRS::Known_symmetry> isometries = c.shape.symmetries;
-    ASSERT_EQ(isometries.size(), 2u);
-    IRS::Known_symmetry half_turn = isometries[0];
-    half_turn.name = "half turn (" + isometries[0].name + " after " + isometries[1].name + ")";
-    for(std::size_t v = 0; v < pts.size(); ++v)
-    {
-      const std::ptrdiff_t w = isometries[1].mirror[v];
-      half_turn.mirror[v] = w < 0 ? -1 : isometries[0].mirror[std::size_t(w)];
-    }
-    isometries.push_back(half_turn);
-    for(const IRS::Known_symmetry& k : isometries)
-    {
-      const double share = map_quality(pts, partner, everywhere, 0, k, 2. * c.shape.mean_edge_length, c.distortion).share();
-      if(share > best) { best = share; best_name = k.name; }
-    }
-    std::cout << "[ " << c.name << " ] global reflection ~ " << best_name << ": " << 100. * best
-              << " % of the vertices within 2 edges of its mirror; " << 100. * double(fixed) / double(pts.size())
-              << " % within 2 edges of themselves" << std::endl;
-    EXPECT_GE(best, 0.9);
-    EXPECT_LE(double(fixed), 0.15 * double(pts.size()));
+    ASSERT_GE(partner[v], 0) << "every vertex lies on a face";
+    ASSERT_LT(partner[v], std::ptrdiff_t(pts.size()));
+    fixed += distance(pts[v], pts[std::size_t(partner[v])]) < 2. * e;
   }
+  std::vector<IRS::Known_symmetry> isometries = shape.symmetries;
+  ASSERT_EQ(isometries.size(), 2u);
+  IRS::Known_symmetry half_turn = isometries[0];
+  half_turn.name = "half turn (" + isometries[0].name + " after " + isometries[1].name + ")";
+  for(std::size_t v = 0; v < pts.size(); ++v)
+  {
+    const std::ptrdiff_t w = isometries[1].mirror[v];
+    half_turn.mirror[v] = w < 0 ? -1 : isometries[0].mirror[std::size_t(w)];
+  }
+  isometries.push_back(half_turn);
+  const auto best = best_matching_symmetry(pts, partner, isometries, 2. * e);
+  std::cout << "[ stick figure ] global reflection ~ " << isometries[best.first].name << ": " << 100. * best.second
+            << " % of the vertices within 2 edges of its mirror; " << 100. * double(fixed) / double(pts.size())
+            << " % within 2 edges of themselves" << std::endl;
+  EXPECT_GE(best.second, 0.9);
+  EXPECT_LE(double(fixed), 0.15 * double(pts.size()));
 }
 
 // `f` throws Input_error of `problem` whose message contains `words`
@@ -1531,10 +1540,8 @@ TEST(Curves, PairsConsistentWithMapAreThePairsItSwaps)
   // the random ones are not; every pair kept meets the definition
   const auto shape = IRS::generate_capsule<Mesh>(1500);
   const Mesh& tm = shape.mesh;
-  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(tm);
-  const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(tm, IRS::parameters::number_of_samples(std::size_t(300)).random_seed(1u));
-  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const IRS::Geodesic_distance_matrix D = distances_from_samples(tm, 300);
+  const std::vector<std::size_t>& samples = D.sources();
   const Pairs mirror_pairs = mirror_similar_pairs(shape.symmetries, {2}, D, 0., 7);
   const Pairs mixed = mirror_similar_pairs(shape.symmetries, {2}, D, 0.05, 7);
   const std::vector<std::ptrdiff_t>& mirror = shape.symmetries[2].mirror;
@@ -1605,10 +1612,8 @@ TEST(Curves, GuidedVoteFollowsTheGlobalReflection)
 {
   const auto shape = IRS::generate_stick_figure<Mesh>(3000);
   const Mesh& tm = shape.mesh;
-  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(tm);
-  const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(tm, IRS::parameters::number_of_samples(std::size_t(500)).random_seed(1u));
-  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const IRS::Geodesic_distance_matrix D = distances_from_samples(tm, 500);
+  const std::vector<std::size_t>& samples = D.sources();
   std::vector<std::ptrdiff_t> global(num_vertices(tm), -1);
   const auto global_map = boost::make_iterator_property_map(global.begin(), get(boost::vertex_index, tm));
   ASSERT_TRUE(IRS::global_reflection_map(tm, samples, global_map));
@@ -1629,15 +1634,8 @@ TEST(Curves, GuidedVoteFollowsTheGlobalReflection)
                               boost::make_iterator_property_map(region.begin(), get(boost::vertex_index, tm))));
   // the symmetry the global map follows
   const std::vector<Point> pts = vertex_points(tm);
-  const std::vector<int> everywhere(pts.size(), 0);
-  std::size_t k = 0;
-  double best = 0.;
-  for(std::size_t s = 0; s < shape.symmetries.size(); ++s)
-  {
-    const double share = map_quality(pts, global, everywhere, 0, shape.symmetries[s], 2. * shape.mean_edge_length).share();
-    if(share > best) { best = share; k = s; }
-  }
-  const IRS::Known_symmetry& sym = shape.symmetries[k];
+  const IRS::Known_symmetry& sym =
+    shape.symmetries[best_matching_symmetry(pts, global, shape.symmetries, 2. * shape.mean_edge_length).first];
   const double to_axis = curve_to_axis(pts, curves[0], sym.axis);
   const Map_quality q = map_quality(pts, partner, region, 0, sym, 2. * shape.mean_edge_length);
   std::cout << "[ stick figure ] " << swapped.size() << " of " << similar.size() << " similar pairs swapped by the global "

@@ -319,6 +319,7 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
       const std::size_t g = st.initial_map[verts[i]];
       if(g != Mirror_matcher::none && in_region[g]) best[i] = g;
     }
+  bool moved = initial; // the partners differ from the landmark match's: new residuals
   if(st.eigenfunctions > 0 && !landmarks.empty() && !initial)
   {
     const std::vector<signed char> side = mirror_sides(D, curve.a, curve.b, st.side_margin);
@@ -330,15 +331,10 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
         kept_side += side[best[i]] == side[verts[i]];
       }
     const bool use_sides = double(kept_side) <= st.side_violations * double(off_band);
-    if(spectral_refinement<ConcurrencyTag>(m, D.sources(), verts, in_region, st.eigenfunctions, best,
-                                           use_sides ? &side : nullptr))
-    {
-      const Mirror_matcher mm(D, landmarks);
-      for(std::size_t i = 0; i < verts.size(); ++i)
-        if(best[i] != Mirror_matcher::none) residual[i] = mm.residual(verts[i], best[i]);
-    }
+    moved = spectral_refinement<ConcurrencyTag>(m, D.sources(), verts, in_region, st.eigenfunctions, best,
+                                                use_sides ? &side : nullptr);
   }
-  if(initial && !landmarks.empty())
+  if(moved && !landmarks.empty())
   {
     const Mirror_matcher mm(D, landmarks);
     for(std::size_t i = 0; i < verts.size(); ++i)

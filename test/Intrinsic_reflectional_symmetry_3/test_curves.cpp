@@ -1115,6 +1115,60 @@ TEST(Curves, FixedPointShareCountsVerticesKeptInPlaceFarFromTheCurve)
   EXPECT_THROW(share(mirror), IRS::Input_error);
 }
 
+TEST(Curves, CurveHeldShareTellsTheReflectionAboutTheCurveFromOtherSymmetries)
+{
+  // the bent capsule's middle circle: its end-to-end reflection holds it all;
+  // the half turn (that reflection after the bending plane's), which swaps the
+  // ends too, and the bending plane's reflection hold only the circle's
+  // points near the plane: those within half the tolerance (0.08 sqrt(area),
+  // here half the radius) of it, a third of the circle
+  const auto shape = IRS::generate_bent_capsule<Mesh>(1500);
+  const IRS::Known_symmetry& ends = shape.symmetries[0];
+  const IRS::Known_symmetry& plane = shape.symmetries[1];
+  ASSERT_EQ(ends.name, "end-to-end (intrinsic)");
+  IRS::Irsa_curve circle;
+  circle.polylines.push_back(ends.axis);
+  const std::size_t n = num_vertices(shape.mesh);
+  std::vector<long> reflection(n), half_turn(n), bending(n), unmapped(n, -1);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    ASSERT_GE(ends.mirror[v], 0);
+    ASSERT_GE(plane.mirror[v], 0);
+    reflection[v] = long(ends.mirror[v]);
+    bending[v] = long(plane.mirror[v]);
+    half_turn[v] = long(ends.mirror[std::size_t(plane.mirror[v])]);
+  }
+  auto held = [&](std::vector<long>& map) {
+    return IRS::curve_held_share(shape.mesh, circle,
+                                 boost::make_iterator_property_map(map.begin(), get(boost::vertex_index, shape.mesh)));
+  };
+  const double of_reflection = held(reflection), of_half_turn = held(half_turn), of_bending = held(bending);
+  std::cout << "[ curve held share ] bent capsule's middle circle (" << ends.axis.size() << " vertices): "
+            << "end-to-end reflection " << 100. * of_reflection << " %, half turn " << 100. * of_half_turn
+            << " %, bending plane " << 100. * of_bending << " %" << std::endl;
+  EXPECT_EQ(of_reflection, 1.);
+  EXPECT_LT(of_half_turn, 0.4);
+  EXPECT_LT(of_bending, 0.4);
+  EXPECT_LT(0.4, IRS::whole_shape_min_held_share);
+  EXPECT_EQ(held(unmapped), 0.);
+  EXPECT_EQ(IRS::curve_held_share(shape.mesh, IRS::Irsa_curve(),
+                                  boost::make_iterator_property_map(reflection.begin(), get(boost::vertex_index, shape.mesh))),
+            0.);
+
+  // the guided run's choice: the reflection must hold the curve and be the less defective map
+  EXPECT_TRUE(IRS::takes_whole_shape_reflection(of_reflection, 0., 0.05, 0., 0.06));
+  EXPECT_FALSE(IRS::takes_whole_shape_reflection(of_half_turn, 0., 0.05, 0., 0.06));
+  EXPECT_FALSE(IRS::takes_whole_shape_reflection(of_reflection, 0., 0.05, 0., 0.05)); // a tie keeps the regions' map
+  EXPECT_FALSE(IRS::takes_whole_shape_reflection(of_reflection, 0.1, 0.05, 0., 0.06)); // 0.08 > 0.06
+
+  // bad input: a partner that is no vertex, a curve vertex out of range
+  std::vector<long> bad = reflection;
+  bad[ends.axis[0]] = long(n);
+  EXPECT_THROW(held(bad), IRS::Input_error);
+  circle.polylines[0].push_back(n);
+  EXPECT_THROW(held(reflection), IRS::Input_error);
+}
+
 TEST(Curves, IsometricDistortionSeesPartsMappedByAnotherSymmetry)
 {
   // the ellipsoid's three mirror planes x=0, y=0, z=0 (its tessellation is

@@ -70,6 +70,7 @@ struct Seed_run
   std::size_t region_faces = 0, mapped_vertices = 0;
   double fixed_share = 0., distortion = 0.;
   bool guided = false; // voted by the pairs that the global reflection swaps
+  bool whole_shape = false; // its map is that reflection, its first curve's region the whole shape
   bool suspect() const { return IRS::is_suspect_symmetric_map(fixed_share, distortion); }
 };
 
@@ -96,7 +97,11 @@ usage: irsym MESH --out DIR [options]
                        shape's global reflection swaps (global_reflection_map(), from the
                        Laplace spectrum); its map replaces the kept one if less defective, or
                        if it holds nothing in place with a distortion of at most 0.1
-                       (keeps_guided_run(); results.guided). Measured: no second run on
+                       (keeps_guided_run(); results.guided). That run's map is the global
+                       reflection itself, over the whole shape (one region, of its first
+                       curve; results.whole_shape_reflection), where that reflection holds
+                       the curve in place and is less defective than the map of the run's
+                       regions (takes_whole_shape_reflection()). Measured: no second run on
                        FAUST's 19 humans, 2.6 runs per mesh on SCAPE's 18 (seed 2; 5
                        instead of 3: +0.8 to +1.6 points of correspondence rate there,
                        over three seeds)
@@ -143,7 +148,8 @@ outputs in DIR:
                        sqrt(area) on average (isometric_distortion); results.tries: seed,
                        fixed_point_share and isometric_distortion of each run, and
                        results.seed_kept: the seed whose run all outputs come from;
-                       results.guided: whether that run is the guided one (see --tries)
+                       results.guided: whether that run is the guided one (see --tries),
+                       results.whole_shape_reflection: whether its map is the global one
   samples.txt          the samples, as input vertex ids (one per line)
   tau.txt              the IRSA transform, one value per input vertex (input order)
   transform.ply        input mesh coloured by the IRSA transform (vertex scalar 'transform')
@@ -531,6 +537,25 @@ Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, co
   // part by another symmetry is suspect
   r.fixed_share = IRS::fixed_point_share(work, r.curves, partner_map);
   r.distortion = IRS::isometric_distortion(work, partner_map, IRS::parameters::vertex_region_map(map_region_map));
+  if(guided_by != nullptr && global_map != nullptr)
+  {
+    // the reflection itself over the whole shape, where it is the better map
+    // (takes_whole_shape_reflection())
+    const auto global = boost::make_iterator_property_map(global_map->begin(), get(boost::vertex_index, work));
+    const double share = IRS::fixed_point_share(work, r.curves, global), distortion = IRS::isometric_distortion(work, global);
+    if(!r.curves.empty() &&
+       IRS::takes_whole_shape_reflection(IRS::curve_held_share(work, r.curves.front(), global), share, distortion,
+                                         r.fixed_share, r.distortion))
+    {
+      r.partner = *global_map;
+      for(long& f : r.region) f = 0; // the first curve's region: the whole shape
+      r.region_faces = r.region.size();
+      r.mapped_vertices = std::size_t(std::count_if(r.partner.begin(), r.partner.end(), [](long p) { return p >= 0; }));
+      r.fixed_share = share;
+      r.distortion = distortion;
+      r.whole_shape = true;
+    }
+  }
   log.stop();
   return r;
 }
@@ -637,7 +662,8 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
                 << " with the pairs that the global reflection swaps\n";
       guided = run_seed(opt, work, oracle, vertex_sdf, areas, suspect_run.seed, within_limit, log, &suspect_run,
                         &global_map);
-      tries.push(irsym::Json::object().add("seed", guided.seed).add("guided", true).add("curves", guided.curves.size())
+      tries.push(irsym::Json::object().add("seed", guided.seed).add("guided", true)
+                   .add("whole_shape_reflection", guided.whole_shape).add("curves", guided.curves.size())
                    .add("fixed_point_share", guided.fixed_share).add("isometric_distortion", guided.distortion));
       return true;
     });
@@ -749,6 +775,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
      .add("map_suspect", map_suspect)
      .add("seed_kept", kept.seed)
      .add("guided", kept.guided)
+     .add("whole_shape_reflection", kept.whole_shape)
      .add("tries", tries)
      .add("segments", segments);
   irsym::Json curve_list = irsym::Json::array();

@@ -66,7 +66,9 @@
 //             suspect, or else the one of least dist + 0.3 fixed share; when every
 //             run is suspect, one more run on the kept run's samples votes with
 //             the pairs that the global reflection swaps (global_reflection_map())
-//             and is kept where keeps_guided_run() says (seed column "Sg"); columns seed (of
+//             and is kept where keeps_guided_run() says (seed column "Sg"; "Sgw"
+//             where its map is the global reflection itself, over the whole shape,
+//             the less defective of the two, as irsym); columns seed (of
 //             the run kept) and runs; total s sums the runs, the other times
 //             are those of the run kept
 //   DIR       write NAME.map (partner per vertex, -1 for none) and
@@ -171,6 +173,7 @@ struct Pipeline_result
   double distortion = 0.;  // isometric_distortion() of the map, not timed
   unsigned seed = 0; // of the run kept
   bool guided = false; // voted by the pairs that the global reflection swaps (irsym --tries)
+  bool whole_shape = false; // its map is that reflection itself (irsym's results.whole_shape_reflection)
   int runs = 1;      // runs made with --tries; the times are those of the run kept, but total s sums all runs
   double seconds[6] = {0., 0., 0., 0., 0., 0.}; // geodesics, signatures, voting, curves, map, total
 };
@@ -179,6 +182,9 @@ struct Pipeline_result
 // whose runs are on another mesh), and one line per run on stderr
 const std::vector<std::pair<std::size_t, std::size_t>>* runs_ground_truth = nullptr;
 void log_run(const Options& o, const Mesh& m, const Pipeline_result& r);
+// and the global reflection of the first run's samples, which the later lines
+// compare their maps with
+std::vector<std::ptrdiff_t> logged_global_map;
 
 // the thresholds that every stage after the voting tests distances with, as
 // their documentation asks: one set for the map, the regions and the CR0% map
@@ -264,6 +270,22 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   r.seconds[5] = total.time();
   r.fixed_share = IRS::fixed_point_share(m, r.curves, partner);
   r.distortion = IRS::isometric_distortion(m, partner, IRS::parameters::vertex_region_map(map_region));
+  if(guided)
+  {
+    // as irsym: the reflection itself over the whole shape where it is the better map
+    const double share = IRS::fixed_point_share(m, r.curves, vertex_map_property(m, *global_map));
+    const double distortion = IRS::isometric_distortion(m, vertex_map_property(m, *global_map));
+    if(!r.curves.empty() &&
+       IRS::takes_whole_shape_reflection(IRS::curve_held_share(m, r.curves.front(), vertex_map_property(m, *global_map)),
+                                         share, distortion, r.fixed_share, r.distortion))
+    {
+      r.partner = *global_map;
+      r.region_faces = num_faces(m);
+      r.fixed_share = share;
+      r.distortion = distortion;
+      r.whole_shape = true;
+    }
+  }
   r.seed = o.seed;
   return r;
 }
@@ -289,6 +311,7 @@ void log_global_reflection(const Options& o, const Mesh& m, const Pipeline_resul
   const IRS::internal::Curves_mesh cm = IRS::internal::make_curves_mesh(m, CGAL::parameters::default_values());
   const IRS::internal::Global_reflection g =
     IRS::internal::global_reflection<CGAL::Parallel_if_available_tag>(cm, r.D.sources());
+  logged_global_map.clear();
   if(!g.found) { std::cerr << "  no global reflection\n"; return; }
   auto as_partner = [](const std::vector<std::size_t>& p) {
     std::vector<std::ptrdiff_t> out(p.size(), -1);
@@ -297,7 +320,8 @@ void log_global_reflection(const Options& o, const Mesh& m, const Pipeline_resul
   };
   std::ostringstream what;
   what << "global reflection, pattern " << g.pattern << ", off-diagonal " << g.off_diagonal_share;
-  log_map(o, m, what.str(), r.seed, r.curves, as_partner(g.partner));
+  logged_global_map = as_partner(g.partner);
+  log_map(o, m, what.str(), r.seed, r.curves, logged_global_map);
   std::vector<std::size_t> verts(cm.number_of_vertices), refined = g.partner;
   std::iota(verts.begin(), verts.end(), std::size_t(0));
   IRS::internal::spectral_refinement<CGAL::Parallel_if_available_tag>(
@@ -314,6 +338,7 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
   t.start();
   const std::vector<double> vertex_sdf = IRS::vertex_sdf_values(m), vertex_areas = IRS::vertex_areas(m);
   const double sdf_seconds = t.time(); // counted with the signatures (sig s) and in total s
+  logged_global_map.clear();
   double total_seconds = sdf_seconds;
   auto outcome = IRS::internal::best_of_tries<Pipeline_result>(
     [&](unsigned seed) {
@@ -321,8 +346,8 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
       run.seed = seed;
       Pipeline_result r = run_pipeline_once(m, run, vertex_sdf, vertex_areas);
       total_seconds += r.seconds[5];
-      log_run(o, m, r);
       if(o.log_runs && seed == o.seed) log_global_reflection(o, m, r);
+      log_run(o, m, r);
       return r;
     },
     o.seed, o.tries,
@@ -507,14 +532,34 @@ Metrics evaluate(const Mesh& m, const std::vector<std::pair<std::size_t, std::si
   return out;
 }
 
+// the share of the samples s of `r` that the global reflection g brings back
+// from their partner p(s): g(p(s)) within consistent_pair_tolerance of s
+double agreement_with_global_map(const Mesh& m, const Pipeline_result& r)
+{
+  if(logged_global_map.size() != num_vertices(m) || r.D.number_of_sources() == 0) return -1.;
+  const double tolerance = IRS::consistent_pair_tolerance * std::sqrt(CGAL::Polygon_mesh_processing::area(m));
+  std::size_t agree = 0;
+  for(std::size_t i = 0; i < r.D.number_of_sources(); ++i)
+  {
+    const std::ptrdiff_t p = r.partner[r.D.sources()[i]];
+    const std::ptrdiff_t back = p >= 0 ? logged_global_map[std::size_t(p)] : -1;
+    if(back >= 0 && r.D(i, std::size_t(back)) <= tolerance) ++agree;
+  }
+  return double(agree) / double(r.D.number_of_sources());
+}
+
 void log_run(const Options& o, const Mesh& m, const Pipeline_result& r)
 {
   if(!o.log_runs || runs_ground_truth == nullptr || o.fill_holes) return;
   Pipeline_result copy = r;
   copy.partner_without_spectral = r.partner;
-  std::cerr << "  run seed " << r.seed << (r.guided ? " (guided)" : "") << ": fixed " << 100. * r.fixed_share
-            << " %, distortion " << r.distortion << ", defect " << IRS::symmetric_map_defect(r.fixed_share, r.distortion)
-            << ", CR " << evaluate(m, *runs_ground_truth, copy).cr() << " %" << std::endl;
+  std::cerr << "  run seed " << r.seed << (r.whole_shape ? " (guided, whole shape)" : r.guided ? " (guided)" : "")
+            << ": fixed " << 100. * r.fixed_share << " %, distortion " << r.distortion << ", defect "
+            << IRS::symmetric_map_defect(r.fixed_share, r.distortion) << ", CR "
+            << evaluate(m, *runs_ground_truth, copy).cr() << " %";
+  const double agreement = agreement_with_global_map(m, r);
+  if(agreement >= 0.) std::cerr << ", agrees " << 100. * agreement << " %";
+  std::cerr << std::endl;
 }
 
 std::vector<long> read_integers(const fs::path& p, bool first_column_only)
@@ -583,7 +628,7 @@ void print_row(const std::string& name, const Mesh& m, std::size_t samples, cons
             << r.seconds[5] << std::setprecision(1) << std::setw(8) << e.own_side() << std::setw(7) << e.isometric_share()
             << std::setprecision(2) << std::setw(8) << e.cr_isometric() << std::setprecision(1) << std::setw(11)
             << e.failed_more_isometric() << std::setw(10) << e.at_contact() << std::setw(8) << 100. * r.fixed_share
-            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << (std::to_string(r.seed) + (r.guided ? "g" : "")) << std::setw(6) << r.runs << std::setw(8) << e.checks << std::endl;
+            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << (std::to_string(r.seed) + (r.whole_shape ? "gw" : r.guided ? "g" : "")) << std::setw(6) << r.runs << std::setw(8) << e.checks << std::endl;
 }
 
 struct Summary

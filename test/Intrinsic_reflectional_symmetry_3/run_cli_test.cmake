@@ -314,6 +314,34 @@ if(NOT last_err MATCHES "voting again on the samples of seed 0")
   message(FATAL_ERROR "--tries 1 on the two snowmen: no message for the guided run: ${last_err}")
 endif()
 
+# 2e. the guided run that takes the global reflection itself (measured at 400
+# samples, seed 3; takes_whole_shape_reflection()): its map covers the whole
+# shape as the region of its first curve, as report.json says
+run(0 --shape two_snowmen --samples 400 --seed 3 --tries 1 --threads 2 --out ${WORK_DIR}/whole)
+file(READ ${WORK_DIR}/whole/report.json whole_report)
+string(JSON wkept ERROR_VARIABLE werr GET "${whole_report}" results whole_shape_reflection)
+string(JSON wtry ERROR_VARIABLE werr1 GET "${whole_report}" results tries 1 whole_shape_reflection)
+string(JSON wfaces ERROR_VARIABLE werr2 GET "${whole_report}" results faces_in_regions)
+string(JSON wmapped ERROR_VARIABLE werr3 GET "${whole_report}" results vertices_with_partner)
+string(JSON wfirst ERROR_VARIABLE werr4 GET "${guided_report}" results whole_shape_reflection)
+if(werr OR werr1 OR werr2 OR werr3 OR werr4 OR NOT wkept STREQUAL "ON" OR NOT wtry STREQUAL "ON"
+   OR NOT wfirst STREQUAL "OFF")
+  message(FATAL_ERROR "--tries 1 on the two snowmen at 400 samples, seed 3: whole_shape_reflection '${wkept}' "
+                      "(in tries: '${wtry}'), expected true; at 300 samples, seed 0: '${wfirst}', expected false "
+                      "${werr}${werr1}${werr2}${werr3}${werr4}")
+endif()
+file(STRINGS ${WORK_DIR}/whole/regions.txt wregions)
+list(LENGTH wregions wn)
+list(REMOVE_DUPLICATES wregions)
+file(STRINGS ${WORK_DIR}/whole/symmetric_map.txt wpartners)
+list(LENGTH wpartners wv)
+list(FIND wpartners -1 wunmapped)
+if(NOT wregions STREQUAL "0" OR NOT wn EQUAL wfaces OR NOT wunmapped EQUAL -1 OR NOT wv EQUAL wmapped)
+  message(FATAL_ERROR "the whole-shape map: region ids '${wregions}' over ${wn} faces (report: ${wfaces}), "
+                      "${wv} vertices (report: ${wmapped} mapped), first unmapped at ${wunmapped}; expected "
+                      "region 0 everywhere and every vertex mapped")
+endif()
+
 # 3. bad input: exit 2 and a message naming the problem
 file(WRITE ${WORK_DIR}/quad.off "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
 run(2 ${WORK_DIR}/quad.off --out ${WORK_DIR}/bad)

@@ -559,6 +559,9 @@ void log_run(const Options& o, const Mesh& m, const Pipeline_result& r)
             << evaluate(m, *runs_ground_truth, copy).cr() << " %";
   const double agreement = agreement_with_global_map(m, r);
   if(agreement >= 0.) std::cerr << ", agrees " << 100. * agreement << " %";
+  if(r.guided && !r.curves.empty() && logged_global_map.size() == num_vertices(m))
+    std::cerr << ", first curve held " << 100. * IRS::curve_held_share(m, r.curves.front(), vertex_map_property(m, logged_global_map))
+              << " %";
   std::cerr << std::endl;
 }
 

@@ -102,9 +102,9 @@ usage: irsym MESH --out DIR [options]
                        curve; results.whole_shape_reflection), where that reflection holds
                        the curve in place and is less defective than the map of the run's
                        regions (takes_whole_shape_reflection()). Measured: no second run on
-                       FAUST's 19 humans, 2.6 runs per mesh on SCAPE's 18 (seed 2; 5
-                       instead of 3: +0.8 to +1.6 points of correspondence rate there,
-                       over three seeds)
+                       FAUST's 19 humans, 2.9 runs per mesh on SCAPE's 18 (seed 2, the
+                       guided run counted; before it, 5 tries instead of 3 gave +0.8 to
+                       +1.6 points of correspondence rate there, over three seeds)
   --geodesics G        geodesic oracle: heat (default), exact or dijkstra
   --threads T          worker threads (default: all cores); results do not depend on it
   --target-vertices N  first remesh or decimate to about N vertices (default: keep the mesh)

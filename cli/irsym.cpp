@@ -71,6 +71,7 @@ struct Seed_run
   double fixed_share = 0., distortion = 0.;
   bool guided = false; // voted by the pairs that the global reflection swaps
   bool whole_shape = false; // its map is that reflection, its first curve's region the whole shape
+  double global_reversing_share = -1.; // orientation_reversing_share() of that reflection (guided runs)
   bool suspect() const { return IRS::is_suspect_symmetric_map(fixed_share, distortion); }
 };
 
@@ -99,9 +100,10 @@ usage: irsym MESH --out DIR [options]
                        if it holds nothing in place with a distortion of at most 0.1
                        (keeps_guided_run(); results.guided). That run's map is the global
                        reflection itself, over the whole shape (one region, of its first
-                       curve; results.whole_shape_reflection), where that reflection holds
-                       the curve in place and is less defective than the map of the run's
-                       regions (takes_whole_shape_reflection()). Measured: no second run on
+                       curve; results.whole_shape_reflection), where that map turns the
+                       surface over, as a reflection does and a rotation does not
+                       (orientation_reversing_share() at least 0.5), and is less defective
+                       than the map of the run's regions (takes_whole_shape_reflection()). Measured: no second run on
                        FAUST's 19 humans, 2.9 runs per mesh on SCAPE's 18 (seed 2, the
                        guided run counted; before it, 5 tries instead of 3 gave +0.8 to
                        +1.6 points of correspondence rate there, over three seeds)
@@ -543,8 +545,9 @@ Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, co
     // (takes_whole_shape_reflection())
     const auto global = boost::make_iterator_property_map(global_map->begin(), get(boost::vertex_index, work));
     const double share = IRS::fixed_point_share(work, r.curves, global), distortion = IRS::isometric_distortion(work, global);
+    r.global_reversing_share = IRS::orientation_reversing_share(work, global);
     if(!r.curves.empty() &&
-       IRS::takes_whole_shape_reflection(IRS::curve_held_share(work, r.curves.front(), global), share, distortion,
+       IRS::takes_whole_shape_reflection(r.global_reversing_share, share, distortion,
                                          r.fixed_share, r.distortion))
     {
       r.partner = *global_map;
@@ -663,7 +666,9 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
       guided = run_seed(opt, work, oracle, vertex_sdf, areas, suspect_run.seed, within_limit, log, &suspect_run,
                         &global_map);
       tries.push(irsym::Json::object().add("seed", guided.seed).add("guided", true)
-                   .add("whole_shape_reflection", guided.whole_shape).add("curves", guided.curves.size())
+                   .add("whole_shape_reflection", guided.whole_shape)
+                   .add("global_reflection_reversing_share", guided.global_reversing_share)
+                   .add("curves", guided.curves.size())
                    .add("fixed_point_share", guided.fixed_share).add("isometric_distortion", guided.distortion));
       return true;
     });

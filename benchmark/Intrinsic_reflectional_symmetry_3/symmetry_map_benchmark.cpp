@@ -276,7 +276,7 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
     const double share = IRS::fixed_point_share(m, r.curves, vertex_map_property(m, *global_map));
     const double distortion = IRS::isometric_distortion(m, vertex_map_property(m, *global_map));
     if(!r.curves.empty() &&
-       IRS::takes_whole_shape_reflection(IRS::curve_held_share(m, r.curves.front(), vertex_map_property(m, *global_map)),
+       IRS::takes_whole_shape_reflection(IRS::orientation_reversing_share(m, vertex_map_property(m, *global_map)),
                                          share, distortion, r.fixed_share, r.distortion))
     {
       r.partner = *global_map;
@@ -559,6 +559,7 @@ void log_run(const Options& o, const Mesh& m, const Pipeline_result& r)
             << evaluate(m, *runs_ground_truth, copy).cr() << " %";
   const double agreement = agreement_with_global_map(m, r);
   if(agreement >= 0.) std::cerr << ", agrees " << 100. * agreement << " %";
+  std::cerr << ", reverses " << 100. * IRS::orientation_reversing_share(m, vertex_map_property(m, r.partner)) << " %";
   if(r.guided && !r.curves.empty() && logged_global_map.size() == num_vertices(m))
     std::cerr << ", first curve held " << 100. * IRS::curve_held_share(m, r.curves.front(), vertex_map_property(m, logged_global_map))
               << " %";

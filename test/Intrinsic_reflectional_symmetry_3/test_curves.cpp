@@ -1149,17 +1149,10 @@ TEST(Curves, CurveHeldShareTellsTheReflectionAboutTheCurveFromOtherSymmetries)
   EXPECT_EQ(of_reflection, 1.);
   EXPECT_LT(of_half_turn, 0.4);
   EXPECT_LT(of_bending, 0.4);
-  EXPECT_LT(0.4, IRS::whole_shape_min_held_share);
   EXPECT_EQ(held(unmapped), 0.);
   EXPECT_EQ(IRS::curve_held_share(shape.mesh, IRS::Irsa_curve(),
                                   boost::make_iterator_property_map(reflection.begin(), get(boost::vertex_index, shape.mesh))),
             0.);
-
-  // the guided run's choice: the reflection must hold the curve and be the less defective map
-  EXPECT_TRUE(IRS::takes_whole_shape_reflection(of_reflection, 0., 0.05, 0., 0.06));
-  EXPECT_FALSE(IRS::takes_whole_shape_reflection(of_half_turn, 0., 0.05, 0., 0.06));
-  EXPECT_FALSE(IRS::takes_whole_shape_reflection(of_reflection, 0., 0.05, 0., 0.05)); // a tie keeps the regions' map
-  EXPECT_FALSE(IRS::takes_whole_shape_reflection(of_reflection, 0.1, 0.05, 0., 0.06)); // 0.08 > 0.06
 
   // bad input: a partner that is no vertex, a curve vertex out of range
   std::vector<long> bad = reflection;
@@ -1167,6 +1160,64 @@ TEST(Curves, CurveHeldShareTellsTheReflectionAboutTheCurveFromOtherSymmetries)
   EXPECT_THROW(held(bad), IRS::Input_error);
   circle.polylines[0].push_back(n);
   EXPECT_THROW(held(reflection), IRS::Input_error);
+}
+
+TEST(Curves, OrientationReversingShareTellsAReflectionFromARotation)
+{
+  // the bent capsule's two reflections (end to end, intrinsic, and the
+  // bending plane) turn the surface over; their composition, the half turn,
+  // swaps the ends as the first does and flips the same eigenfunctions, but
+  // keeps the orientation; so does the identity
+  const auto shape = IRS::generate_bent_capsule<Mesh>(1500);
+  const IRS::Known_symmetry& ends = shape.symmetries[0];
+  const IRS::Known_symmetry& plane = shape.symmetries[1];
+  const std::size_t n = num_vertices(shape.mesh);
+  std::vector<long> reflection(n), half_turn(n), bending(n), identity(n), partial(n), unmapped(n, -1);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    ASSERT_GE(ends.mirror[v], 0);
+    ASSERT_GE(plane.mirror[v], 0);
+    reflection[v] = long(ends.mirror[v]);
+    bending[v] = long(plane.mirror[v]);
+    half_turn[v] = long(ends.mirror[std::size_t(plane.mirror[v])]);
+    identity[v] = long(v);
+    partial[v] = v % 3 == 0 ? -1 : reflection[v]; // faces with an unmapped corner do not count
+  }
+  auto reversing = [&](std::vector<long>& map) {
+    return IRS::orientation_reversing_share(shape.mesh,
+                                            boost::make_iterator_property_map(map.begin(), get(boost::vertex_index, shape.mesh)));
+  };
+  const double of_reflection = reversing(reflection), of_half_turn = reversing(half_turn),
+               of_bending = reversing(bending);
+  std::cout << "[ orientation reversing share ] bent capsule: end-to-end reflection " << 100. * of_reflection
+            << " %, bending plane " << 100. * of_bending << " %, half turn " << 100. * of_half_turn << " %"
+            << std::endl;
+  EXPECT_GT(of_reflection, 0.99);
+  EXPECT_GT(of_bending, 0.99);
+  EXPECT_LT(of_half_turn, 0.01);
+  EXPECT_EQ(reversing(identity), 0.);
+  EXPECT_EQ(reversing(unmapped), 0.); // no face counts
+  EXPECT_GT(reversing(partial), 0.99);
+
+  // Polyhedron_3, generated with the same vertex order: the same share
+  const auto poly_shape = IRS::generate_bent_capsule<Polyhedron>(1500);
+  auto vim = CGAL::get_initialized_vertex_index_map(poly_shape.mesh);
+  EXPECT_DOUBLE_EQ(IRS::orientation_reversing_share(poly_shape.mesh, boost::make_iterator_property_map(reflection.begin(), vim)),
+                   of_reflection);
+
+  // the guided run's choice: the global map must be a reflection and the less defective map
+  EXPECT_TRUE(IRS::takes_whole_shape_reflection(of_reflection, 0., 0.05, 0., 0.06));
+  EXPECT_FALSE(IRS::takes_whole_shape_reflection(of_half_turn, 0., 0.05, 0., 0.06));
+  EXPECT_FALSE(IRS::takes_whole_shape_reflection(of_reflection, 0., 0.05, 0., 0.05)); // a tie keeps the regions' map
+  EXPECT_FALSE(IRS::takes_whole_shape_reflection(of_reflection, 0.1, 0.05, 0., 0.06)); // 0.08 > 0.06
+  EXPECT_LT(of_half_turn, IRS::whole_shape_min_reversing_share);
+
+  // bad input: a partner that is no vertex
+  std::vector<long> bad = reflection;
+  bad[3] = long(n);
+  EXPECT_THROW(reversing(bad), IRS::Input_error);
+  bad[3] = -2;
+  EXPECT_THROW(reversing(bad), IRS::Input_error);
 }
 
 TEST(Curves, IsometricDistortionSeesPartsMappedByAnotherSymmetry)
@@ -1505,12 +1556,10 @@ TEST(Curves, BentCapsuleGivesItsIntrinsicAxis)
 // that holds many samples in place is never kept. The stick figure has two
 // mirror planes, which compose into a half turn, an isometry too, whose
 // functional map is as diagonal: the sign patterns cannot tell it from a
-// reflection (on a human it is no isometry). Out of reach: a surface of
-// revolution (the snowman), whose eigenfunctions come in pairs of one
-// eigenvalue that a symmetry rotates into each other rather than flips; and
-// the bent capsule (measured: 44.5 % of the vertices within the bound of
-// the half turn, 3.1 % of its end-to-end reflection), a thin tube nearly
-// invariant under turns about its axis, which 31 functions do not resolve.
+// reflection, the orientation does (orientation_reversing_share()). Out of
+// reach: a surface of revolution (the snowman), whose eigenfunctions come in
+// pairs of one eigenvalue that a symmetry rotates into each other rather
+// than flips.
 // heat-method distances from `n` farthest-point samples (seed 1)
 IRS::Geodesic_distance_matrix distances_from_samples(const Mesh& tm, std::size_t n)
 {
@@ -1569,7 +1618,44 @@ TEST(Curves, GlobalReflectionFollowsAKnownSymmetry)
             << " % of the vertices within 2 edges of its mirror; " << 100. * double(fixed) / double(pts.size())
             << " % within 2 edges of themselves" << std::endl;
   EXPECT_GE(best.second, 0.9);
+  EXPECT_LT(best.first, 2u) << "a reflection, not the half turn";
   EXPECT_LE(double(fixed), 0.15 * double(pts.size()));
+  EXPECT_GT(IRS::orientation_reversing_share(tm, boost::make_iterator_property_map(partner.begin(),
+                                                                                   get(boost::vertex_index, tm))),
+            IRS::whole_shape_min_reversing_share);
+
+  // the bent capsule: its half turn flips the same eigenfunctions as its
+  // end-to-end reflection, but keeps the orientation, and is not taken
+  // (measured: 92.1 % of the vertices within 2 edges of the end-to-end
+  // reflection, 21.4 % of the half turn; without the orientation, the half
+  // turn was taken: 44.5 % against 3.1 %)
+  const auto capsule = IRS::generate_bent_capsule<Mesh>(2000);
+  const std::vector<Point> cpts = vertex_points(capsule.mesh);
+  const std::vector<std::size_t> csamples =
+    IRS::farthest_point_samples(capsule.mesh, IRS::parameters::number_of_samples(std::size_t(400)).random_seed(1u));
+  std::vector<std::ptrdiff_t> cpartner(cpts.size(), -2);
+  const auto cmap = boost::make_iterator_property_map(cpartner.begin(), get(boost::vertex_index, capsule.mesh));
+  ASSERT_TRUE(IRS::global_reflection_map(capsule.mesh, csamples, cmap));
+  std::vector<IRS::Known_symmetry> cisometries = capsule.symmetries;
+  ASSERT_EQ(cisometries.size(), 2u);
+  IRS::Known_symmetry turn = cisometries[0];
+  for(std::size_t v = 0; v < cpts.size(); ++v)
+  {
+    const std::ptrdiff_t w = cisometries[1].mirror[v];
+    turn.mirror[v] = w < 0 ? -1 : cisometries[0].mirror[std::size_t(w)];
+  }
+  cisometries.push_back(turn);
+  const std::vector<int> everywhere(cpts.size(), 0);
+  std::vector<double> shares;
+  for(const auto& sym : cisometries)
+    shares.push_back(map_quality(cpts, cpartner, everywhere, 0, sym, 2. * capsule.mean_edge_length).share());
+  const double reversing = IRS::orientation_reversing_share(capsule.mesh, cmap);
+  std::cout << "[ bent capsule ] global reflection: " << 100. * shares[0] << " % within 2 edges of the end-to-end "
+            << "reflection, " << 100. * shares[1] << " % of the bending plane's, " << 100. * shares[2]
+            << " % of the half turn; orientation reversed on " << 100. * reversing << " %" << std::endl;
+  EXPECT_GE(shares[0], 0.85);
+  EXPECT_LT(shares[2], 0.3);
+  EXPECT_GT(reversing, 0.9);
 }
 
 // `f` throws Input_error of `problem` whose message contains `words`

@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -27,7 +28,9 @@
 // ZoomOut (Melzi et al. 2019, zoomout() of symmetric_map_spectral.h) on the
 // samples; the pattern kept is the one whose map is a symmetry: it moves
 // (nearly) every sample off itself, and its functional map stays closest to
-// diagonal at the last size (an isometry's map commutes with the Laplacian).
+// diagonal at the last size (an isometry's map commutes with the Laplacian)
+// among those that reverse the orientation (a rotation flips eigenfunctions
+// too).
 // Why: on posed humans (SCAPE mesh016, 044, 064) the curves of the voting
 // miss the left-right axis at every seed, because the bent limbs make other
 // local reflections as well supported; the spectrum sees the shape whole.
@@ -54,6 +57,117 @@ constexpr double global_reflection_near_itself = 0.03;
 /// suspect_fixed_point_share)
 constexpr double global_reflection_max_fixed_share = 0.1;
 
+/// the rings of edges around a vertex over which orientation_reversed_share()
+/// fits the map: one face is too small a patch, a nearest-neighbour map
+/// being noisy at the scale of an edge
+constexpr int orientation_rings = 2;
+
+/// The share of the area of `m` (one third of each face's area to each
+/// corner), over the vertices counted, around which the vertex map `image`
+/// (by vertex index; negative or Curves_mesh::none: no image) turns the
+/// surface over. Around a vertex `v` with an image, the vertices within
+/// `orientation_rings` rings of edges and their images, taken in the tangent
+/// planes at `v` and at its image (right-handed frames about the
+/// area-weighted vertex normals), give the least-squares linear map between
+/// the two planes; a negative determinant reverses the orientation. A
+/// reflection reverses it, a rotation keeps it: near 1 for a reflection,
+/// near 0 for the half turn that swaps the ends of a capsule as the
+/// reflection about its middle circle does (both flip the same
+/// eigenfunctions). A vertex counts where at least three of its neighbours
+/// have an image and the fit is not degenerate; 0 where none counts. With
+/// `vertex_subset`, over those vertices alone.
+template <class Image>
+double orientation_reversed_share(const Curves_mesh& m, const std::vector<Image>& image,
+                                  const std::vector<std::size_t>* vertex_subset = nullptr,
+                                  int rings = orientation_rings)
+{
+  typedef std::array<double, 3> Vector;
+  auto minus = [](const Vector& a, const Vector& b) { return Vector{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+  auto cross = [](const Vector& a, const Vector& b) {
+    return Vector{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  auto dot = [](const Vector& a, const Vector& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  auto unit = [&](const Vector& a) {
+    const double l = std::sqrt(dot(a, a));
+    return l > 0. ? Vector{a[0] / l, a[1] / l, a[2] / l} : Vector{0., 0., 0.};
+  };
+  const std::size_t n = m.number_of_vertices, none = Curves_mesh::none;
+  std::vector<Vector> normal(n, Vector{0., 0., 0.});
+  std::vector<double> vertex_area(n, 0.);
+  for(const auto& f : m.faces)
+  {
+    const Vector a = cross(minus(m.points[f[1]], m.points[f[0]]), minus(m.points[f[2]], m.points[f[0]]));
+    const double third = std::sqrt(dot(a, a)) / 6.;
+    for(std::size_t v : f)
+    {
+      for(int k = 0; k < 3; ++k) normal[v][k] += a[k];
+      vertex_area[v] += third;
+    }
+  }
+  auto image_of = [&](std::size_t v) {
+    const long long p = static_cast<long long>(image[v]);
+    return p < 0 || std::size_t(p) >= n ? none : std::size_t(p);
+  };
+  // a right-handed tangent frame (t1, t2) about the unit normal at v
+  auto frame = [&](std::size_t v, Vector& t1, Vector& t2) {
+    const Vector z = unit(normal[v]);
+    const Vector helper = std::abs(z[0]) < 0.9 ? Vector{1., 0., 0.} : Vector{0., 1., 0.};
+    t1 = unit(cross(helper, z));
+    t2 = cross(z, t1);
+    return dot(z, z) > 0.;
+  };
+  std::vector<std::size_t> ring, mark(n, none);
+  double reversed = 0., counted = 0.;
+  const std::size_t number_of_checks = vertex_subset != nullptr ? vertex_subset->size() : n;
+  for(std::size_t c = 0; c < number_of_checks; ++c)
+  {
+    const std::size_t v = vertex_subset != nullptr ? (*vertex_subset)[c] : c;
+    const std::size_t w = v < n ? image_of(v) : none;
+    Vector s1, s2, t1, t2;
+    if(w == none || !frame(v, s1, s2) || !frame(w, t1, t2)) continue;
+    ring.assign(1, v);
+    mark[v] = c;
+    for(std::size_t begin = 0, r = 0; r < std::size_t(rings); ++r)
+    {
+      const std::size_t end = ring.size();
+      for(std::size_t i = begin; i < end; ++i)
+        for(std::size_t k = m.adjacency_offsets[ring[i]]; k < m.adjacency_offsets[ring[i] + 1]; ++k)
+          if(mark[m.adjacency[k]] != c)
+          {
+            mark[m.adjacency[k]] = c;
+            ring.push_back(m.adjacency[k]);
+          }
+      begin = end;
+    }
+    // sum of y x^T over the neighbours: its determinant has the sign of the fit's
+    double M[2][2] = {{0., 0.}, {0., 0.}};
+    std::size_t used = 0;
+    for(std::size_t i = 1; i < ring.size(); ++i)
+    {
+      const std::size_t u = ring[i], iu = image_of(u);
+      if(iu == none) continue;
+      const Vector dx = minus(m.points[u], m.points[v]), dy = minus(m.points[iu], m.points[w]);
+      const double x[2] = {dot(dx, s1), dot(dx, s2)}, y[2] = {dot(dy, t1), dot(dy, t2)};
+      for(int a = 0; a < 2; ++a)
+        for(int b = 0; b < 2; ++b) M[a][b] += y[a] * x[b];
+      ++used;
+    }
+    const double det = M[0][0] * M[1][1] - M[0][1] * M[1][0];
+    if(used < 3 || det == 0.) continue;
+    counted += vertex_area[v];
+    if(det < 0.) reversed += vertex_area[v];
+  }
+  return counted > 0. ? reversed / counted : 0.;
+}
+
+/// the samples (the first ones) around which a candidate map's orientation
+/// is read
+constexpr std::size_t global_reflection_orientation_checks = 300;
+
+/// the orientation_reversed_share() of a reflection: most of the surface
+/// turned over (a rotation turns none of it)
+constexpr double global_reflection_min_reversed_share = 0.5;
+
 struct Global_reflection
 {
   bool found = false;
@@ -67,7 +181,7 @@ struct Global_reflection
 /// `sample_vertices` (at least 2 `global_reflection_eigenfunctions` of them
 /// on faces, spread evenly: farthest-point samples). Not found (`found`
 /// false, no partners) where the spectrum cannot be computed or no pattern's
-/// map is a symmetry. Deterministic: a fixed solver start and exact nearest
+/// map is a reflection (few samples held in place, the orientation reversed). Deterministic: a fixed solver start and exact nearest
 /// rows (nearest_rows()).
 template <class ConcurrencyTag>
 Global_reflection global_reflection(const Curves_mesh& m, const std::vector<std::size_t>& sample_vertices)
@@ -97,8 +211,13 @@ Global_reflection global_reflection(const Curves_mesh& m, const std::vector<std:
 
   const double near_itself = global_reflection_near_itself * std::sqrt(m.area);
   const std::size_t k0 = global_reflection_flipped_functions + 1;
-  double best_off_diagonal = std::numeric_limits<double>::infinity();
-  Eigen::MatrixXd best_map;
+  struct Candidate
+  {
+    unsigned pattern;
+    double fixed_share, off_diagonal;
+    Eigen::MatrixXd map;
+  };
+  std::vector<Candidate> candidates;
   for(unsigned pattern = 1; pattern < (1u << global_reflection_flipped_functions); ++pattern)
   {
     Eigen::MatrixXd C0 = Eigen::MatrixXd::Identity(Eigen::Index(k0), Eigen::Index(k0));
@@ -114,22 +233,65 @@ Global_reflection global_reflection(const Curves_mesh& m, const std::vector<std:
     const double fixed_share = double(fixed) / double(ns);
     const double norm = C.squaredNorm();
     const double off_diagonal = norm > 0. ? 1. - C.diagonal().squaredNorm() / norm : 1.;
-    if(fixed_share <= global_reflection_max_fixed_share && off_diagonal < best_off_diagonal)
+    if(fixed_share <= global_reflection_max_fixed_share)
+      candidates.push_back(Candidate{pattern, fixed_share, off_diagonal, C});
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.off_diagonal < b.off_diagonal; });
+
+  // A rotation flips eigenfunctions as a reflection does (the half turn of a
+  // bent capsule or of a figure with two mirror planes), but keeps the
+  // orientation: the most diagonal candidate that turns the surface over, read
+  // around the first samples (their rings mapped alone, a fraction of the
+  // cost of the whole map)
+  std::vector<std::size_t> check_vertices, check_rows, mark(m.number_of_vertices, none);
+  for(std::size_t i = 0; i < sample_vertices.size() && check_vertices.size() < global_reflection_orientation_checks; ++i)
+  {
+    const std::size_t v = sample_vertices[i];
+    // a sample within the rings of an earlier one adds little: the next
+    if(v >= m.number_of_vertices || row_of[v] == none || mark[v] != none) continue;
+    check_vertices.push_back(v);
+    std::vector<std::size_t> ring(1, v);
+    mark[v] = v;
+    for(std::size_t begin = 0, r = 0; r < std::size_t(orientation_rings); ++r)
     {
-      best_off_diagonal = off_diagonal;
-      best_map = C;
-      out.pattern = pattern;
-      out.fixed_share = fixed_share;
-      out.off_diagonal_share = off_diagonal;
+      const std::size_t end = ring.size();
+      for(std::size_t j = begin; j < end; ++j)
+        for(std::size_t k = m.adjacency_offsets[ring[j]]; k < m.adjacency_offsets[ring[j] + 1]; ++k)
+          if(mark[m.adjacency[k]] != v)
+          {
+            mark[m.adjacency[k]] = v;
+            ring.push_back(m.adjacency[k]);
+          }
+      begin = end;
+    }
+    for(std::size_t u : ring)
+      if(row_of[u] != none) check_rows.push_back(row_of[u]);
+  }
+  std::sort(check_rows.begin(), check_rows.end());
+  check_rows.erase(std::unique(check_rows.begin(), check_rows.end()), check_rows.end());
+  const Candidate* kept = nullptr;
+  for(const Candidate& c : candidates)
+  {
+    std::vector<std::size_t> image(spectrum.rows.size(), none), vertex_image(m.number_of_vertices, none);
+    nearest_rows<ConcurrencyTag>(spectrum.basis, c.map, check_rows, image);
+    for(std::size_t r : check_rows) vertex_image[spectrum.rows[r]] = spectrum.rows[image[r]];
+    if(orientation_reversed_share(m, vertex_image, &check_vertices) >= global_reflection_min_reversed_share)
+    {
+      kept = &c;
+      break;
     }
   }
-  if(best_map.size() == 0) return out;
+  if(kept == nullptr) return out;
+  out.pattern = kept->pattern;
+  out.fixed_share = kept->fixed_share;
+  out.off_diagonal_share = kept->off_diagonal;
 
   // the kept map on every vertex of the spectrum
   const std::size_t n = spectrum.rows.size();
   std::vector<std::size_t> rows(n), image(n);
   std::iota(rows.begin(), rows.end(), std::size_t(0));
-  nearest_rows<ConcurrencyTag>(spectrum.basis, best_map, rows, image);
+  nearest_rows<ConcurrencyTag>(spectrum.basis, kept->map, rows, image);
   out.partner.assign(m.number_of_vertices, none);
   for(std::size_t r = 0; r < n; ++r) out.partner[spectrum.rows[r]] = spectrum.rows[image[r]];
   out.found = true;

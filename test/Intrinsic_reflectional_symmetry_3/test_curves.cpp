@@ -1115,6 +1115,28 @@ TEST(Curves, FixedPointShareCountsVerticesKeptInPlaceFarFromTheCurve)
   EXPECT_THROW(share(mirror), IRS::Input_error);
 }
 
+// the isometry `second` after `first` (the half turn of two mirror planes):
+// -1 where either is undefined
+IRS::Known_symmetry composed(const IRS::Known_symmetry& first, const IRS::Known_symmetry& second)
+{
+  IRS::Known_symmetry out = second;
+  out.name = "half turn (" + second.name + " after " + first.name + ")";
+  out.extrinsic = false;
+  out.axis.clear();
+  for(std::size_t v = 0; v < out.mirror.size(); ++v)
+  {
+    const std::ptrdiff_t w = first.mirror[v];
+    out.mirror[v] = w < 0 ? -1 : second.mirror[std::size_t(w)];
+  }
+  return out;
+}
+
+// a symmetry's map as a vector of partners (long, as the tests' maps)
+std::vector<long> as_partners(const IRS::Known_symmetry& s)
+{
+  return std::vector<long>(s.mirror.begin(), s.mirror.end());
+}
+
 TEST(Curves, CurveHeldShareTellsTheReflectionAboutTheCurveFromOtherSymmetries)
 {
   // the bent capsule's middle circle: its end-to-end reflection holds it all;
@@ -1129,15 +1151,9 @@ TEST(Curves, CurveHeldShareTellsTheReflectionAboutTheCurveFromOtherSymmetries)
   IRS::Irsa_curve circle;
   circle.polylines.push_back(ends.axis);
   const std::size_t n = num_vertices(shape.mesh);
-  std::vector<long> reflection(n), half_turn(n), bending(n), unmapped(n, -1);
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    ASSERT_GE(ends.mirror[v], 0);
-    ASSERT_GE(plane.mirror[v], 0);
-    reflection[v] = long(ends.mirror[v]);
-    bending[v] = long(plane.mirror[v]);
-    half_turn[v] = long(ends.mirror[std::size_t(plane.mirror[v])]);
-  }
+  std::vector<long> reflection = as_partners(ends), bending = as_partners(plane),
+                    half_turn = as_partners(composed(plane, ends)), unmapped(n, -1);
+  ASSERT_EQ(std::count(half_turn.begin(), half_turn.end(), -1l), 0);
   auto held = [&](std::vector<long>& map) {
     return IRS::curve_held_share(shape.mesh, circle,
                                  boost::make_iterator_property_map(map.begin(), get(boost::vertex_index, shape.mesh)));
@@ -1172,16 +1188,13 @@ TEST(Curves, OrientationReversingShareTellsAReflectionFromARotation)
   const IRS::Known_symmetry& ends = shape.symmetries[0];
   const IRS::Known_symmetry& plane = shape.symmetries[1];
   const std::size_t n = num_vertices(shape.mesh);
-  std::vector<long> reflection(n), half_turn(n), bending(n), identity(n), partial(n), unmapped(n, -1);
+  std::vector<long> reflection = as_partners(ends), bending = as_partners(plane),
+                    half_turn = as_partners(composed(plane, ends)), identity(n), partial(n), unmapped(n, -1);
+  ASSERT_EQ(std::count(half_turn.begin(), half_turn.end(), -1l), 0);
   for(std::size_t v = 0; v < n; ++v)
   {
-    ASSERT_GE(ends.mirror[v], 0);
-    ASSERT_GE(plane.mirror[v], 0);
-    reflection[v] = long(ends.mirror[v]);
-    bending[v] = long(plane.mirror[v]);
-    half_turn[v] = long(ends.mirror[std::size_t(plane.mirror[v])]);
     identity[v] = long(v);
-    partial[v] = v % 3 == 0 ? -1 : reflection[v]; // faces with an unmapped corner do not count
+    partial[v] = v % 3 == 0 ? -1 : reflection[v]; // vertices without an image do not count
   }
   auto reversing = [&](std::vector<long>& map) {
     return IRS::orientation_reversing_share(shape.mesh,
@@ -1605,14 +1618,7 @@ TEST(Curves, GlobalReflectionFollowsAKnownSymmetry)
   }
   std::vector<IRS::Known_symmetry> isometries = shape.symmetries;
   ASSERT_EQ(isometries.size(), 2u);
-  IRS::Known_symmetry half_turn = isometries[0];
-  half_turn.name = "half turn (" + isometries[0].name + " after " + isometries[1].name + ")";
-  for(std::size_t v = 0; v < pts.size(); ++v)
-  {
-    const std::ptrdiff_t w = isometries[1].mirror[v];
-    half_turn.mirror[v] = w < 0 ? -1 : isometries[0].mirror[std::size_t(w)];
-  }
-  isometries.push_back(half_turn);
+  isometries.push_back(composed(isometries[1], isometries[0]));
   const auto best = best_matching_symmetry(pts, partner, isometries, 2. * e);
   std::cout << "[ stick figure ] global reflection ~ " << isometries[best.first].name << ": " << 100. * best.second
             << " % of the vertices within 2 edges of its mirror; " << 100. * double(fixed) / double(pts.size())
@@ -1638,13 +1644,7 @@ TEST(Curves, GlobalReflectionFollowsAKnownSymmetry)
   ASSERT_TRUE(IRS::global_reflection_map(capsule.mesh, csamples, cmap));
   std::vector<IRS::Known_symmetry> cisometries = capsule.symmetries;
   ASSERT_EQ(cisometries.size(), 2u);
-  IRS::Known_symmetry turn = cisometries[0];
-  for(std::size_t v = 0; v < cpts.size(); ++v)
-  {
-    const std::ptrdiff_t w = cisometries[1].mirror[v];
-    turn.mirror[v] = w < 0 ? -1 : cisometries[0].mirror[std::size_t(w)];
-  }
-  cisometries.push_back(turn);
+  cisometries.push_back(composed(cisometries[1], cisometries[0]));
   const std::vector<int> everywhere(cpts.size(), 0);
   std::vector<double> shares;
   for(const auto& sym : cisometries)

@@ -62,11 +62,33 @@ constexpr double global_reflection_max_fixed_share = 0.1;
 /// being noisy at the scale of an edge
 constexpr int orientation_rings = 2;
 
+/// The vertices within `rings` rings of edges of `v` (`v` first), into
+/// `ring`; `mark` (by vertex, stamped with `stamp`) tells those already taken,
+/// so that one array serves many calls with distinct stamps
+inline void vertex_rings(const Curves_mesh& m, std::size_t v, int rings, std::vector<std::size_t>& mark,
+                         std::size_t stamp, std::vector<std::size_t>& ring)
+{
+  ring.assign(1, v);
+  mark[v] = stamp;
+  for(std::size_t begin = 0, r = 0; r < std::size_t(rings); ++r)
+  {
+    const std::size_t end = ring.size();
+    for(std::size_t i = begin; i < end; ++i)
+      for(std::size_t k = m.adjacency_offsets[ring[i]]; k < m.adjacency_offsets[ring[i] + 1]; ++k)
+        if(mark[m.adjacency[k]] != stamp)
+        {
+          mark[m.adjacency[k]] = stamp;
+          ring.push_back(m.adjacency[k]);
+        }
+    begin = end;
+  }
+}
+
 /// The share of the area of `m` (one third of each face's area to each
 /// corner), over the vertices counted, around which the vertex map `image`
 /// (by vertex index; negative or Curves_mesh::none: no image) turns the
 /// surface over. Around a vertex `v` with an image, the vertices within
-/// `orientation_rings` rings of edges and their images, taken in the tangent
+/// `rings` rings of edges and their images, taken in the tangent
 /// planes at `v` and at its image (right-handed frames about the
 /// area-weighted vertex normals), give the least-squares linear map between
 /// the two planes; a negative determinant reverses the orientation. A
@@ -125,20 +147,7 @@ double orientation_reversed_share(const Curves_mesh& m, const std::vector<Image>
     const std::size_t w = v < n ? image_of(v) : none;
     Vector s1, s2, t1, t2;
     if(w == none || !frame(v, s1, s2) || !frame(w, t1, t2)) continue;
-    ring.assign(1, v);
-    mark[v] = c;
-    for(std::size_t begin = 0, r = 0; r < std::size_t(rings); ++r)
-    {
-      const std::size_t end = ring.size();
-      for(std::size_t i = begin; i < end; ++i)
-        for(std::size_t k = m.adjacency_offsets[ring[i]]; k < m.adjacency_offsets[ring[i] + 1]; ++k)
-          if(mark[m.adjacency[k]] != c)
-          {
-            mark[m.adjacency[k]] = c;
-            ring.push_back(m.adjacency[k]);
-          }
-      begin = end;
-    }
+    vertex_rings(m, v, rings, mark, c, ring);
     // sum of y x^T over the neighbours: its determinant has the sign of the fit's
     double M[2][2] = {{0., 0.}, {0., 0.}};
     std::size_t used = 0;
@@ -244,27 +253,14 @@ Global_reflection global_reflection(const Curves_mesh& m, const std::vector<std:
   // orientation: the most diagonal candidate that turns the surface over, read
   // around the first samples (their rings mapped alone, a fraction of the
   // cost of the whole map)
-  std::vector<std::size_t> check_vertices, check_rows, mark(m.number_of_vertices, none);
+  std::vector<std::size_t> check_vertices, check_rows, ring, mark(m.number_of_vertices, none);
   for(std::size_t i = 0; i < sample_vertices.size() && check_vertices.size() < global_reflection_orientation_checks; ++i)
   {
     const std::size_t v = sample_vertices[i];
     // a sample within the rings of an earlier one adds little: the next
     if(v >= m.number_of_vertices || row_of[v] == none || mark[v] != none) continue;
     check_vertices.push_back(v);
-    std::vector<std::size_t> ring(1, v);
-    mark[v] = v;
-    for(std::size_t begin = 0, r = 0; r < std::size_t(orientation_rings); ++r)
-    {
-      const std::size_t end = ring.size();
-      for(std::size_t j = begin; j < end; ++j)
-        for(std::size_t k = m.adjacency_offsets[ring[j]]; k < m.adjacency_offsets[ring[j] + 1]; ++k)
-          if(mark[m.adjacency[k]] != v)
-          {
-            mark[m.adjacency[k]] = v;
-            ring.push_back(m.adjacency[k]);
-          }
-      begin = end;
-    }
+    vertex_rings(m, v, orientation_rings, mark, v, ring);
     for(std::size_t u : ring)
       if(row_of[u] != none) check_rows.push_back(row_of[u]);
   }

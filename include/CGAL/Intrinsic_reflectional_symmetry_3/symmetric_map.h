@@ -853,7 +853,7 @@ double orientation_reversing_share(const TriangleMesh& tm, VertexPartnerMap part
 /// The `orientation_reversing_share()` from which a guided run may take the
 /// global reflection itself as its map (`takes_whole_shape_reflection()`):
 /// most of the surface turned over, as a reflection does.
-constexpr double whole_shape_min_reversing_share = 0.5;
+constexpr double whole_shape_min_reversing_share = internal::reflection_min_reversed_share;
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// Whether a guided run (voted by the pairs that the whole shape's reflection

@@ -13,7 +13,6 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -88,7 +87,7 @@ inline void vertex_rings(const Curves_mesh& m, std::size_t v, int rings, std::ve
 /// corner), over the vertices counted, around which the vertex map `image`
 /// (by vertex index; negative or Curves_mesh::none: no image) turns the
 /// surface over. Around a vertex `v` with an image, the vertices within
-/// `rings` rings of edges and their images, taken in the tangent
+/// `orientation_rings` rings of edges and their images, taken in the tangent
 /// planes at `v` and at its image (right-handed frames about the
 /// area-weighted vertex normals), give the least-squares linear map between
 /// the two planes; a negative determinant reverses the orientation. A
@@ -100,43 +99,34 @@ inline void vertex_rings(const Curves_mesh& m, std::size_t v, int rings, std::ve
 /// `vertex_subset`, over those vertices alone.
 template <class Image>
 double orientation_reversed_share(const Curves_mesh& m, const std::vector<Image>& image,
-                                  const std::vector<std::size_t>* vertex_subset = nullptr,
-                                  int rings = orientation_rings)
+                                  const std::vector<std::size_t>* vertex_subset = nullptr)
 {
-  typedef std::array<double, 3> Vector;
-  auto minus = [](const Vector& a, const Vector& b) { return Vector{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
-  auto cross = [](const Vector& a, const Vector& b) {
-    return Vector{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  };
-  auto dot = [](const Vector& a, const Vector& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-  auto unit = [&](const Vector& a) {
-    const double l = std::sqrt(dot(a, a));
-    return l > 0. ? Vector{a[0] / l, a[1] / l, a[2] / l} : Vector{0., 0., 0.};
-  };
   const std::size_t n = m.number_of_vertices, none = Curves_mesh::none;
-  std::vector<Vector> normal(n, Vector{0., 0., 0.});
+  auto point = [&](std::size_t v) { return Eigen::Vector3d(m.points[v][0], m.points[v][1], m.points[v][2]); };
+  std::vector<Eigen::Vector3d> normal(n, Eigen::Vector3d::Zero());
   std::vector<double> vertex_area(n, 0.);
   for(const auto& f : m.faces)
   {
-    const Vector a = cross(minus(m.points[f[1]], m.points[f[0]]), minus(m.points[f[2]], m.points[f[0]]));
-    const double third = std::sqrt(dot(a, a)) / 6.;
+    const Eigen::Vector3d a = (point(f[1]) - point(f[0])).cross(point(f[2]) - point(f[0]));
     for(std::size_t v : f)
     {
-      for(int k = 0; k < 3; ++k) normal[v][k] += a[k];
-      vertex_area[v] += third;
+      normal[v] += a;
+      vertex_area[v] += a.norm() / 6.;
     }
   }
   auto image_of = [&](std::size_t v) {
     const long long p = static_cast<long long>(image[v]);
     return p < 0 || std::size_t(p) >= n ? none : std::size_t(p);
   };
-  // a right-handed tangent frame (t1, t2) about the unit normal at v
-  auto frame = [&](std::size_t v, Vector& t1, Vector& t2) {
-    const Vector z = unit(normal[v]);
-    const Vector helper = std::abs(z[0]) < 0.9 ? Vector{1., 0., 0.} : Vector{0., 1., 0.};
-    t1 = unit(cross(helper, z));
-    t2 = cross(z, t1);
-    return dot(z, z) > 0.;
+  // a right-handed tangent frame (the rows of the result) about the normal at v
+  auto frame = [&](std::size_t v, Eigen::Matrix<double, 2, 3>& tangent) {
+    if(normal[v].squaredNorm() == 0.) return false;
+    const Eigen::Vector3d z = normal[v].normalized();
+    const Eigen::Vector3d helper = std::abs(z[0]) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d t1 = helper.cross(z).normalized();
+    tangent.row(0) = t1.transpose();
+    tangent.row(1) = z.cross(t1).transpose();
+    return true;
   };
   std::vector<std::size_t> ring, mark(n, none);
   double reversed = 0., counted = 0.;
@@ -145,23 +135,20 @@ double orientation_reversed_share(const Curves_mesh& m, const std::vector<Image>
   {
     const std::size_t v = vertex_subset != nullptr ? (*vertex_subset)[c] : c;
     const std::size_t w = v < n ? image_of(v) : none;
-    Vector s1, s2, t1, t2;
-    if(w == none || !frame(v, s1, s2) || !frame(w, t1, t2)) continue;
-    vertex_rings(m, v, rings, mark, c, ring);
+    Eigen::Matrix<double, 2, 3> at_v, at_w;
+    if(w == none || !frame(v, at_v) || !frame(w, at_w)) continue;
+    vertex_rings(m, v, orientation_rings, mark, c, ring);
     // sum of y x^T over the neighbours: its determinant has the sign of the fit's
-    double M[2][2] = {{0., 0.}, {0., 0.}};
+    Eigen::Matrix2d M = Eigen::Matrix2d::Zero();
     std::size_t used = 0;
     for(std::size_t i = 1; i < ring.size(); ++i)
     {
       const std::size_t u = ring[i], iu = image_of(u);
       if(iu == none) continue;
-      const Vector dx = minus(m.points[u], m.points[v]), dy = minus(m.points[iu], m.points[w]);
-      const double x[2] = {dot(dx, s1), dot(dx, s2)}, y[2] = {dot(dy, t1), dot(dy, t2)};
-      for(int a = 0; a < 2; ++a)
-        for(int b = 0; b < 2; ++b) M[a][b] += y[a] * x[b];
+      M += (at_w * (point(iu) - point(w))) * (at_v * (point(u) - point(v))).transpose();
       ++used;
     }
-    const double det = M[0][0] * M[1][1] - M[0][1] * M[1][0];
+    const double det = M.determinant();
     if(used < 3 || det == 0.) continue;
     counted += vertex_area[v];
     if(det < 0.) reversed += vertex_area[v];
@@ -173,9 +160,9 @@ double orientation_reversed_share(const Curves_mesh& m, const std::vector<Image>
 /// is read
 constexpr std::size_t global_reflection_orientation_checks = 300;
 
-/// the orientation_reversed_share() of a reflection: most of the surface
-/// turned over (a rotation turns none of it)
-constexpr double global_reflection_min_reversed_share = 0.5;
+/// the least orientation_reversed_share() of a reflection: most of the
+/// surface turned over (a rotation turns none of it)
+constexpr double reflection_min_reversed_share = 0.5;
 
 struct Global_reflection
 {
@@ -267,12 +254,13 @@ Global_reflection global_reflection(const Curves_mesh& m, const std::vector<std:
   std::sort(check_rows.begin(), check_rows.end());
   check_rows.erase(std::unique(check_rows.begin(), check_rows.end()), check_rows.end());
   const Candidate* kept = nullptr;
+  std::vector<std::size_t> check_image(spectrum.rows.size(), none), vertex_image(m.number_of_vertices, none);
   for(const Candidate& c : candidates)
   {
-    std::vector<std::size_t> image(spectrum.rows.size(), none), vertex_image(m.number_of_vertices, none);
-    nearest_rows<ConcurrencyTag>(spectrum.basis, c.map, check_rows, image);
-    for(std::size_t r : check_rows) vertex_image[spectrum.rows[r]] = spectrum.rows[image[r]];
-    if(orientation_reversed_share(m, vertex_image, &check_vertices) >= global_reflection_min_reversed_share)
+    // only the check rows are written, and read
+    nearest_rows<ConcurrencyTag>(spectrum.basis, c.map, check_rows, check_image);
+    for(std::size_t r : check_rows) vertex_image[spectrum.rows[r]] = spectrum.rows[check_image[r]];
+    if(orientation_reversed_share(m, vertex_image, &check_vertices) >= reflection_min_reversed_share)
     {
       kept = &c;
       break;

@@ -68,7 +68,8 @@
 //             the pairs that the global reflection swaps (global_reflection_map())
 //             and is kept where keeps_guided_run() says (seed column "Sg"; "Sgw"
 //             where its map is the global reflection itself, over the whole shape,
-//             the less defective of the two, as irsym); columns seed (of
+//             the less defective of the two, as irsym; "Sgwr" where that reflection
+//             is refined over the whole mesh, refine_symmetric_map()); columns seed (of
 //             the run kept) and runs; total s sums the runs, the other times
 //             are those of the run kept
 //   DIR       write NAME.map (partner per vertex, -1 for none) and
@@ -174,6 +175,7 @@ struct Pipeline_result
   unsigned seed = 0; // of the run kept
   bool guided = false; // voted by the pairs that the global reflection swaps (irsym --tries)
   bool whole_shape = false; // its map is that reflection itself (irsym's results.whole_shape_reflection)
+  bool whole_shape_refined = false; // that reflection refined over the whole mesh (refine_symmetric_map())
   int runs = 1;      // runs made with --tries; the times are those of the run kept, but total s sums all runs
   double seconds[6] = {0., 0., 0., 0., 0., 0.}; // geodesics, signatures, voting, curves, map, total
 };
@@ -272,14 +274,28 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   r.distortion = IRS::isometric_distortion(m, partner, IRS::parameters::vertex_region_map(map_region));
   if(guided)
   {
-    // as irsym: the reflection itself over the whole shape where it is the better map
-    const double share = IRS::fixed_point_share(m, r.curves, vertex_map_property(m, *global_map));
-    const double distortion = IRS::isometric_distortion(m, vertex_map_property(m, *global_map));
+    // as irsym: the reflection itself over the whole shape where it is the
+    // better map, refined over the whole mesh where that lowers its defect
+    std::vector<std::ptrdiff_t> whole = *global_map, refined = *global_map;
+    double share = IRS::fixed_point_share(m, r.curves, vertex_map_property(m, whole));
+    double distortion = IRS::isometric_distortion(m, vertex_map_property(m, whole));
+    if(!r.curves.empty() && IRS::refine_symmetric_map(m, D.sources(), vertex_map_property(m, refined)))
+    {
+      const double refined_share = IRS::fixed_point_share(m, r.curves, vertex_map_property(m, refined));
+      const double refined_distortion = IRS::isometric_distortion(m, vertex_map_property(m, refined));
+      if(IRS::symmetric_map_defect(refined_share, refined_distortion) < IRS::symmetric_map_defect(share, distortion))
+      {
+        whole.swap(refined);
+        share = refined_share;
+        distortion = refined_distortion;
+        r.whole_shape_refined = true;
+      }
+    }
     if(!r.curves.empty() &&
-       IRS::takes_whole_shape_reflection(IRS::orientation_reversing_share(m, vertex_map_property(m, *global_map)),
+       IRS::takes_whole_shape_reflection(IRS::orientation_reversing_share(m, vertex_map_property(m, whole)),
                                          share, distortion, r.fixed_share, r.distortion))
     {
-      r.partner = *global_map;
+      r.partner = whole;
       r.region_faces = num_faces(m);
       r.fixed_share = share;
       r.distortion = distortion;
@@ -553,7 +569,8 @@ void log_run(const Options& o, const Mesh& m, const Pipeline_result& r)
   if(!o.log_runs || runs_ground_truth == nullptr || o.fill_holes) return;
   Pipeline_result copy = r;
   copy.partner_without_spectral = r.partner;
-  std::cerr << "  run seed " << r.seed << (r.whole_shape ? " (guided, whole shape)" : r.guided ? " (guided)" : "")
+  std::cerr << "  run seed " << r.seed << (r.whole_shape ? (r.whole_shape_refined ? " (guided, whole shape, refined)" : " (guided, whole shape)")
+                                                        : r.guided ? " (guided)" : "")
             << ": fixed " << 100. * r.fixed_share << " %, distortion " << r.distortion << ", defect "
             << IRS::symmetric_map_defect(r.fixed_share, r.distortion) << ", CR "
             << evaluate(m, *runs_ground_truth, copy).cr() << " %";
@@ -632,7 +649,7 @@ void print_row(const std::string& name, const Mesh& m, std::size_t samples, cons
             << r.seconds[5] << std::setprecision(1) << std::setw(8) << e.own_side() << std::setw(7) << e.isometric_share()
             << std::setprecision(2) << std::setw(8) << e.cr_isometric() << std::setprecision(1) << std::setw(11)
             << e.failed_more_isometric() << std::setw(10) << e.at_contact() << std::setw(8) << 100. * r.fixed_share
-            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << (std::to_string(r.seed) + (r.whole_shape ? "gw" : r.guided ? "g" : "")) << std::setw(6) << r.runs << std::setw(8) << e.checks << std::endl;
+            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << (std::to_string(r.seed) + (r.whole_shape ? (r.whole_shape_refined ? "gwr" : "gw") : r.guided ? "g" : "")) << std::setw(6) << r.runs << std::setw(8) << e.checks << std::endl;
 }
 
 struct Summary

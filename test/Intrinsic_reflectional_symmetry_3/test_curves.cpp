@@ -35,6 +35,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/perturbed_copies.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/symmetric_map_spectral.h>
 
+#include <CGAL/boost/graph/generators.h>
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -1656,6 +1657,17 @@ TEST(Curves, GlobalReflectionFollowsAKnownSymmetry)
   EXPECT_GE(shares[0], 0.85);
   EXPECT_LT(shares[2], 0.3);
   EXPECT_GT(reversing, 0.9);
+
+  // refined over the whole mesh (refine_symmetric_map(), as the guided run
+  // does before it takes the reflection over the whole shape)
+  std::vector<std::ptrdiff_t> refined = cpartner;
+  ASSERT_TRUE(IRS::refine_symmetric_map(
+    capsule.mesh, csamples, boost::make_iterator_property_map(refined.begin(), get(boost::vertex_index, capsule.mesh))));
+  const double refined_share =
+    map_quality(cpts, refined, everywhere, 0, cisometries[0], 2. * capsule.mean_edge_length).share();
+  std::cout << "[ bent capsule ] refined over the whole mesh: " << 100. * refined_share
+            << " % within 2 edges of the end-to-end reflection" << std::endl;
+  EXPECT_GE(refined_share, shares[0]);
 }
 
 // `f` throws Input_error of `problem` whose message contains `words`
@@ -1672,6 +1684,63 @@ void expect_input_error(F f, IRS::Input_problem problem, const std::string& word
     EXPECT_EQ(e.problem(), problem) << e.what();
     EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
   }
+}
+
+TEST(Curves, RefineSymmetricMapMendsTheWholeShapesMap)
+{
+  // the x=0 mirror map of an ellipsoid with one quadrant of one side
+  // unmapped (-1: it starts from the identity), through the public function
+  const auto shape = IRS::generate_ellipsoid<Mesh>(2000);
+  const Mesh& tm = shape.mesh;
+  const std::vector<Point> pts = vertex_points(tm);
+  const IRS::Known_symmetry& s = shape.symmetries[0];
+  ASSERT_EQ(s.name, "x=0 plane");
+  double xmax = 0.;
+  for(const Point& p : pts) xmax = (std::max)(xmax, p.x());
+  std::vector<long> partner(pts.size());
+  for(std::size_t v = 0; v < pts.size(); ++v)
+    partner[v] = pts[v].x() > 0.25 * xmax && pts[v].y() > 0. ? -1 : long(s.mirror[v]);
+  const auto share = [&](const std::vector<long>& map) {
+    std::size_t near = 0;
+    for(std::size_t v = 0; v < pts.size(); ++v)
+      near += map[v] >= 0 && distance(pts[std::size_t(map[v])], pts[std::size_t(s.mirror[v])]) <= 2. * shape.mean_edge_length;
+    return double(near) / double(pts.size());
+  };
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(tm, IRS::parameters::number_of_samples(400).random_seed(1u));
+  std::vector<long> sequential = partner;
+  const double before = share(partner);
+  const auto as_map = [&tm](std::vector<long>& v) {
+    return boost::make_iterator_property_map(v.begin(), get(boost::vertex_index, tm));
+  };
+  ASSERT_TRUE(IRS::refine_symmetric_map(tm, samples, as_map(partner)));
+  ASSERT_TRUE(IRS::refine_symmetric_map<CGAL::Sequential_tag>(tm, samples, as_map(sequential)));
+  std::cout << "[ refine_symmetric_map ] ellipsoid with a quadrant unmapped: " << 100. * before << " % -> "
+            << 100. * share(partner) << " % within 2 edges of the true mirror" << std::endl;
+  EXPECT_LE(before, 0.9);
+  EXPECT_GE(share(partner), 0.98);
+  EXPECT_EQ(partner, sequential); // the same at any thread count
+
+  // too few vertices for 10 functions (a quarter of them at most): not refined, unchanged
+  Mesh small;
+  CGAL::make_icosahedron<Mesh, Point>(small);
+  std::vector<long> small_partner(num_vertices(small));
+  std::iota(small_partner.begin(), small_partner.end(), 0l);
+  const std::vector<long> small_before = small_partner;
+  EXPECT_FALSE(IRS::refine_symmetric_map(small, std::vector<std::size_t>{0, 1, 2},
+                                         boost::make_iterator_property_map(small_partner.begin(),
+                                                                           get(boost::vertex_index, small))));
+  EXPECT_EQ(small_partner, small_before);
+
+  std::vector<long> bad = partner;
+  bad[3] = long(pts.size());
+  expect_input_error([&] { IRS::refine_symmetric_map(tm, samples, as_map(bad)); },
+                     IRS::Input_problem::invalid_parameter, "partner");
+  expect_input_error([&] { IRS::refine_symmetric_map(tm, std::vector<std::size_t>{pts.size()}, as_map(partner)); },
+                     IRS::Input_problem::invalid_parameter, "sample 0");
+  expect_input_error([&] {
+    IRS::refine_symmetric_map(tm, samples, as_map(partner), IRS::parameters::number_of_eigenfunctions(5));
+  }, IRS::Input_problem::invalid_parameter, "number_of_eigenfunctions");
 }
 
 TEST(Curves, PairsConsistentWithMapAreThePairsItSwaps)

@@ -547,35 +547,19 @@ Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, co
     // the reflection itself over the whole shape, where it is the better map
     // (takes_whole_shape_reflection()), refined over the whole mesh where
     // that lowers its defect (refine_symmetric_map())
-    std::vector<long> whole = *global_map, refined = *global_map;
-    const auto as_map = [&work](std::vector<long>& v) {
-      return boost::make_iterator_property_map(v.begin(), get(boost::vertex_index, work));
-    };
-    double share = IRS::fixed_point_share(work, r.curves, as_map(whole));
-    double distortion = IRS::isometric_distortion(work, as_map(whole));
-    if(!r.curves.empty() && IRS::refine_symmetric_map(work, r.samples, as_map(refined)))
-    {
-      const double refined_share = IRS::fixed_point_share(work, r.curves, as_map(refined));
-      const double refined_distortion = IRS::isometric_distortion(work, as_map(refined));
-      if(IRS::symmetric_map_defect(refined_share, refined_distortion) < IRS::symmetric_map_defect(share, distortion))
-      {
-        whole.swap(refined);
-        share = refined_share;
-        distortion = refined_distortion;
-        r.global_refined = true;
-      }
-    }
-    r.global_reversing_share = IRS::orientation_reversing_share(work, as_map(whole));
+    std::vector<long> whole = *global_map;
+    const IRS::internal::Whole_shape_reflection w = IRS::internal::whole_shape_reflection(work, r.curves, r.samples, whole);
+    r.global_refined = w.refined;
+    r.global_reversing_share = w.reversing_share;
     if(!r.curves.empty() &&
-       IRS::takes_whole_shape_reflection(r.global_reversing_share, share, distortion,
-                                         r.fixed_share, r.distortion))
+       IRS::takes_whole_shape_reflection(w.reversing_share, w.share, w.distortion, r.fixed_share, r.distortion))
     {
       r.partner = whole;
       for(long& f : r.region) f = 0; // the first curve's region: the whole shape
       r.region_faces = r.region.size();
       r.mapped_vertices = std::size_t(std::count_if(r.partner.begin(), r.partner.end(), [](long p) { return p >= 0; }));
-      r.fixed_share = share;
-      r.distortion = distortion;
+      r.fixed_share = w.share;
+      r.distortion = w.distortion;
       r.whole_shape = true;
     }
   }

@@ -276,29 +276,16 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   {
     // as irsym: the reflection itself over the whole shape where it is the
     // better map, refined over the whole mesh where that lowers its defect
-    std::vector<std::ptrdiff_t> whole = *global_map, refined = *global_map;
-    double share = IRS::fixed_point_share(m, r.curves, vertex_map_property(m, whole));
-    double distortion = IRS::isometric_distortion(m, vertex_map_property(m, whole));
-    if(!r.curves.empty() && IRS::refine_symmetric_map(m, D.sources(), vertex_map_property(m, refined)))
-    {
-      const double refined_share = IRS::fixed_point_share(m, r.curves, vertex_map_property(m, refined));
-      const double refined_distortion = IRS::isometric_distortion(m, vertex_map_property(m, refined));
-      if(IRS::symmetric_map_defect(refined_share, refined_distortion) < IRS::symmetric_map_defect(share, distortion))
-      {
-        whole.swap(refined);
-        share = refined_share;
-        distortion = refined_distortion;
-        r.whole_shape_refined = true;
-      }
-    }
+    std::vector<std::ptrdiff_t> whole = *global_map;
+    const IRS::internal::Whole_shape_reflection w = IRS::internal::whole_shape_reflection(m, r.curves, D.sources(), whole);
+    r.whole_shape_refined = w.refined;
     if(!r.curves.empty() &&
-       IRS::takes_whole_shape_reflection(IRS::orientation_reversing_share(m, vertex_map_property(m, whole)),
-                                         share, distortion, r.fixed_share, r.distortion))
+       IRS::takes_whole_shape_reflection(w.reversing_share, w.share, w.distortion, r.fixed_share, r.distortion))
     {
       r.partner = whole;
       r.region_faces = num_faces(m);
-      r.fixed_share = share;
-      r.distortion = distortion;
+      r.fixed_share = w.share;
+      r.distortion = w.distortion;
       r.whole_shape = true;
     }
   }

@@ -484,6 +484,24 @@ std::vector<long long> read_partners(const TriangleMesh& tm, VertexPartnerMap pa
   return image;
 }
 
+/// the vertex indices of `samples`, checked against the `n` vertices of the mesh
+template <class SampleRange>
+std::vector<std::size_t> read_samples(const SampleRange& samples, std::size_t n)
+{
+  std::vector<std::size_t> out;
+  for(const auto s : samples)
+  {
+    const std::size_t v = std::size_t(s);
+    if(v >= n)
+      throw Input_error(Input_problem::invalid_parameter,
+                        "sample " + std::to_string(out.size()) + " is vertex " + std::to_string(v) +
+                        " but the mesh has " + std::to_string(n) + " vertices",
+                        out.size());
+    out.push_back(v);
+  }
+  return out;
+}
+
 } // namespace internal
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
@@ -659,17 +677,7 @@ bool global_reflection_map(const TriangleMesh& tm, const SampleRange& samples, V
 {
   const internal::Curves_mesh m = internal::make_curves_mesh(tm, np);
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  std::vector<std::size_t> sample_vertices;
-  for(const auto s : samples)
-  {
-    const std::size_t v = std::size_t(s);
-    if(v >= m.number_of_vertices)
-      throw Input_error(Input_problem::invalid_parameter,
-                        "sample " + std::to_string(sample_vertices.size()) + " is vertex " + std::to_string(v) +
-                        " but the mesh has " + std::to_string(m.number_of_vertices) + " vertices",
-                        sample_vertices.size());
-    sample_vertices.push_back(v);
-  }
+  const std::vector<std::size_t> sample_vertices = internal::read_samples(samples, m.number_of_vertices);
   const internal::Global_reflection g = internal::global_reflection<ConcurrencyTag>(m, sample_vertices);
   typedef typename boost::property_traits<VertexPartnerMap>::value_type Value;
   for(auto v : vertices(tm))
@@ -730,17 +738,7 @@ bool refine_symmetric_map(const TriangleMesh& tm, const SampleRange& samples, Ve
   const double functions = double(choose_parameter(get_parameter(np, inp::number_of_eigenfunctions), 150));
   if(!(functions >= 10. && functions <= 1000.))
     throw Input_error(Input_problem::invalid_parameter, "number_of_eigenfunctions must be in [10, 1000]");
-  std::vector<std::size_t> sample_vertices;
-  for(const auto s : samples)
-  {
-    const std::size_t v = std::size_t(s);
-    if(v >= n)
-      throw Input_error(Input_problem::invalid_parameter,
-                        "sample " + std::to_string(sample_vertices.size()) + " is vertex " + std::to_string(v) +
-                        " but the mesh has " + std::to_string(n) + " vertices",
-                        sample_vertices.size());
-    sample_vertices.push_back(v);
-  }
+  const std::vector<std::size_t> sample_vertices = internal::read_samples(samples, n);
   const std::vector<long long> image = internal::read_partners(tm, partner, vim, n);
   std::vector<std::size_t> all(n), refined(n);
   for(std::size_t v = 0; v < n; ++v)
@@ -1160,6 +1158,49 @@ double isometric_distortion(const TriangleMesh& tm, VertexPartnerMap partner,
   }
   return pairs > 0 ? sum / double(pairs) / std::sqrt(m.area) : 0.;
 }
+
+namespace internal {
+
+/// The guided run's candidate for the whole shape (irsym and
+/// symmetry_map_benchmark): the checks of `takes_whole_shape_reflection()`
+/// for the global reflection `global`, which is first replaced by its
+/// refinement over the whole mesh (`refine_symmetric_map()`, on `samples`)
+/// where that has the lower `symmetric_map_defect()` with `curves`
+struct Whole_shape_reflection
+{
+  double share = 0., distortion = 0., reversing_share = 0.;
+  bool refined = false;
+};
+
+template <class TriangleMesh, class CurveRange, class SampleRange, class Partner>
+Whole_shape_reflection whole_shape_reflection(const TriangleMesh& tm, const CurveRange& curves,
+                                              const SampleRange& samples, std::vector<Partner>& global)
+{
+  const auto as_map = [&tm](std::vector<Partner>& v) {
+    return boost::make_iterator_property_map(v.begin(), get(boost::vertex_index, tm));
+  };
+  Whole_shape_reflection w;
+  w.share = fixed_point_share(tm, curves, as_map(global));
+  w.distortion = isometric_distortion(tm, as_map(global));
+  std::vector<Partner> refined = global;
+  if(!curves.empty() && refine_symmetric_map(tm, samples, as_map(refined)))
+  {
+    const double share = fixed_point_share(tm, curves, as_map(refined));
+    const double distortion = isometric_distortion(tm, as_map(refined));
+    if(symmetric_map_defect(share, distortion) < symmetric_map_defect(w.share, w.distortion))
+    {
+      global.swap(refined);
+      w.share = share;
+      w.distortion = distortion;
+      w.refined = true;
+    }
+  }
+  w.reversing_share = orientation_reversing_share(tm, as_map(global));
+  return w;
+}
+
+} // namespace internal
+
 
 } // namespace Intrinsic_reflectional_symmetry_3
 } // namespace CGAL

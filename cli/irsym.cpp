@@ -92,8 +92,8 @@ usage: irsym MESH --out DIR [options]
   --seed S             random seed (default: 0); same seed, same result
   --tries N            where the symmetric map is suspect (results.map_suspect below), run
                        again from the samples on with seeds S+1, S+2, ..., at most N runs in
-                       all; keep the first map that is not suspect, or else the one of least
-                       isometric_distortion + 0.3 fixed_point_share (default: 5; 1 runs
+                       all, stopping at the first map that is not suspect; keep the one of
+                       least isometric_distortion + 0.3 fixed_point_share (default: 5; 1 runs
                        seed S alone). When every run's map is suspect, one more run on the
                        samples of the map kept lets only the sample pairs vote that the
                        shape's global reflection swaps (global_reflection_map(), from the
@@ -633,8 +633,8 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   stop_if_late("vertex SDF");
 
   // --tries: another seed while the map is suspect (it holds parts far from
-  // the curves in place, or does not preserve distances); the first map that
-  // is not suspect is kept, or else the one of least defect
+  // the curves in place, or does not preserve distances) until a map is not
+  // suspect; the map of least defect of those runs is kept
   // (internal::best_of_tries(): the package's retry rule). A time limit
   // reached during a later try keeps the best earlier run, with a warning.
   irsym::Json tries = irsym::Json::array();

@@ -62,8 +62,8 @@
 //             shapes against their own subject's rest pose (tr_reg_000)
 //   N (tries) as irsym --tries (default 1): where the map is suspect
 //             (fixed% above 10 or dist above 0.04), run again with seeds S+1,
-//             S+2, ..., at most N runs, and keep the first map that is not
-//             suspect, or else the one of least dist + 0.3 fixed share; when every
+//             S+2, ..., at most N runs, until a map is not suspect, and keep
+//             the one of least dist + 0.3 fixed share of those runs; when every
 //             run is suspect, one more run on the kept run's samples votes with
 //             the pairs that the global reflection swaps (global_reflection_map())
 //             and is kept where keeps_guided_run() says (seed column "Sg"; "Sgw"
@@ -333,8 +333,8 @@ void log_global_reflection(const Options& o, const Mesh& m, const Pipeline_resul
 }
 
 // as irsym --tries (the package's retry rule, internal::best_of_tries()):
-// another seed while the map is suspect; the first map that is not, or else
-// the one of least symmetric_map_defect(), is kept
+// another seed while the map is suspect; the map of least
+// symmetric_map_defect() of those runs is kept
 Pipeline_result run_pipeline(const Mesh& m, const Options& o)
 {
   CGAL::Real_timer t;

@@ -1313,12 +1313,13 @@ TEST(Curves, IsometricDistortionSeesPartsMappedByAnotherSymmetry)
   EXPECT_THROW(distortion(bad), IRS::Input_error);
 }
 
-TEST(Curves, BestOfTriesKeepsTheFirstGoodMapOrTheLeastDefect)
+TEST(Curves, BestOfTriesStopsAtAGoodMapAndKeepsTheLeastDefect)
 {
   // the retry rule of irsym --tries and symmetry_map_benchmark --tries, on
   // made-up runs: (fixed-point share, distortion) by seed
   struct Run { unsigned seed = 0; double fixed_share = 0., distortion = 0.; };
-  const std::vector<Run> by_seed = {{0, 0.48, 0.01}, {1, 0.05, 0.06}, {2, 0.20, 0.02}, {3, 0.02, 0.01}};
+  const std::vector<Run> by_seed = {{0, 0.48, 0.01}, {1, 0.05, 0.06}, {2, 0.20, 0.02}, {3, 0.02, 0.01},
+                                    {4, 0.00, 0.045}, {5, 0.075, 0.03}};
   std::vector<unsigned> asked;
   auto run = [&](unsigned seed) { asked.push_back(seed); return by_seed.at(seed); };
   // seed 3 is not suspect: the loop stops there
@@ -1338,6 +1339,21 @@ TEST(Curves, BestOfTriesKeepsTheFirstGoodMapOrTheLeastDefect)
   EXPECT_EQ(one.kept.seed, 3u);
   EXPECT_EQ(one.runs, 1);
   EXPECT_EQ(asked, (std::vector<unsigned>{3}));
+  // seed 5 is not suspect and ends the loop, but seed 4, suspect by its
+  // distortion alone (0.045 > 0.04), is less defective (0.045 < 0.0525), as
+  // a posed shape's right map can be: seed 4 is kept, and no guided run is
+  // asked since a try was not suspect
+  asked.clear();
+  int guided_asked = 0;
+  auto posed_right = IRS::internal::best_of_tries<Run>(run, 4u, 5, [&](const Run&, Run&) {
+    ++guided_asked;
+    return false;
+  });
+  EXPECT_EQ(posed_right.kept.seed, 4u);
+  EXPECT_EQ(posed_right.runs, 2);
+  EXPECT_EQ(asked, (std::vector<unsigned>{4, 5}));
+  EXPECT_EQ(guided_asked, 0);
+  EXPECT_FALSE(posed_right.guided_tried);
 
   // a run cancelled (a time limit) after complete runs: the best of those is
   // kept and the cancellation reported; a cancelled first run propagates, as

@@ -287,6 +287,7 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
       r.fixed_share = w.share;
       r.distortion = w.distortion;
       r.whole_shape = true;
+      IRS::internal::follow_reflection_axis(m, r.partner, r.curves.front());
     }
   }
   r.seed = o.seed;

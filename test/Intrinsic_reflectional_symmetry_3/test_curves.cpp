@@ -1759,6 +1759,101 @@ TEST(Curves, RefineSymmetricMapMendsTheWholeShapesMap)
   }, IRS::Input_problem::invalid_parameter, "number_of_eigenfunctions");
 }
 
+TEST(Curves, ReflectionAxisIsWhereTheMapHoldsTheSurface)
+{
+  // the axis of a known mirror map of an ellipsoid: one closed curve in its
+  // plane, around the whole shape, held by the map
+  const auto shape = IRS::generate_ellipsoid<Mesh>(2000);
+  const Mesh& tm = shape.mesh;
+  const std::vector<Point> pts = vertex_points(tm);
+  const double e = shape.mean_edge_length;
+  const auto as_map = [&tm](std::vector<long>& v) {
+    return boost::make_iterator_property_map(v.begin(), get(boost::vertex_index, tm));
+  };
+  for(std::size_t axis_index : {std::size_t(0), std::size_t(1)}) // the planes x=0 and y=0
+  {
+    const IRS::Known_symmetry& s = shape.symmetries[axis_index];
+    std::vector<long> partner(s.mirror.begin(), s.mirror.end());
+    const IRS::Irsa_curve axis = IRS::reflection_axis(tm, as_map(partner));
+    ASSERT_EQ(axis.polylines.size(), 1u) << s.name;
+    EXPECT_TRUE(axis.closed[0]);
+    ASSERT_EQ(axis.support.size(), 1u);
+    ASSERT_EQ(axis.support[0].size(), axis.polylines[0].size());
+    double off_plane = 0., lowest = 0., highest = 0., zmax = 0., mean_support = 0.;
+    for(const Point& p : pts) zmax = (std::max)(zmax, p.z());
+    for(std::size_t i = 0; i < axis.polylines[0].size(); ++i)
+    {
+      const Point& p = pts[axis.polylines[0][i]];
+      off_plane = (std::max)(off_plane, std::abs(axis_index == 0 ? p.x() : p.y()));
+      lowest = (std::min)(lowest, p.z());
+      highest = (std::max)(highest, p.z());
+      mean_support += axis.support[0][i] / double(axis.polylines[0].size());
+    }
+    std::cout << "[ reflection_axis ] ellipsoid, " << s.name << ": " << axis.polylines[0].size()
+              << " vertices, at most " << off_plane / e << " edges off the plane, length " << axis.boundary_length
+              << ", mean support " << mean_support << std::endl;
+    EXPECT_LE(off_plane, e) << s.name;
+    EXPECT_LE(lowest, -0.9 * zmax) << "the axis runs around the shape";
+    EXPECT_GE(highest, 0.9 * zmax);
+    EXPECT_GE(mean_support, 0.8);
+    EXPECT_GT(axis.boundary_length, 0.);
+    EXPECT_EQ(axis.nu, 0.); // no voting record
+  }
+
+  // a map with one quadrant unmapped still gives the plane
+  {
+    const IRS::Known_symmetry& s = shape.symmetries[0];
+    double xmax = 0.;
+    for(const Point& p : pts) xmax = (std::max)(xmax, p.x());
+    std::vector<long> partial(pts.size());
+    for(std::size_t v = 0; v < pts.size(); ++v)
+      partial[v] = pts[v].x() > 0.25 * xmax && pts[v].y() > 0. ? -1 : long(s.mirror[v]);
+    const IRS::Irsa_curve axis = IRS::reflection_axis(tm, as_map(partial));
+    ASSERT_FALSE(axis.polylines.empty());
+    double off_plane = 0.;
+    for(const auto& pl : axis.polylines)
+      for(std::size_t v : pl) off_plane = (std::max)(off_plane, std::abs(pts[v].x()));
+    std::cout << "[ reflection_axis ] ellipsoid, x=0 plane, a quadrant unmapped: at most " << off_plane / e
+              << " edges off the plane" << std::endl;
+    EXPECT_LE(off_plane, e);
+  }
+
+  // the identity moves nothing: no axis
+  std::vector<long> identity(pts.size());
+  std::iota(identity.begin(), identity.end(), 0l);
+  EXPECT_TRUE(IRS::reflection_axis(tm, as_map(identity)).polylines.empty());
+
+  // the bent capsule's global reflection, refined as the guided run does:
+  // its axis lies on the true one (each vertex within 2 edges of its true mirror image)
+  const auto capsule = IRS::generate_bent_capsule<Mesh>(2000);
+  const std::vector<Point> cpts = vertex_points(capsule.mesh);
+  const std::vector<std::size_t> csamples =
+    IRS::farthest_point_samples(capsule.mesh, IRS::parameters::number_of_samples(std::size_t(400)).random_seed(1u));
+  std::vector<long> cpartner(cpts.size(), -2);
+  const auto cmap = boost::make_iterator_property_map(cpartner.begin(), get(boost::vertex_index, capsule.mesh));
+  ASSERT_TRUE(IRS::global_reflection_map(capsule.mesh, csamples, cmap));
+  ASSERT_TRUE(IRS::refine_symmetric_map(capsule.mesh, csamples, cmap));
+  const IRS::Irsa_curve caxis = IRS::reflection_axis(capsule.mesh, cmap);
+  const IRS::Known_symmetry& end_to_end = capsule.symmetries[0];
+  std::size_t on_axis = 0, count = 0;
+  for(const auto& pl : caxis.polylines)
+    for(std::size_t v : pl)
+    {
+      ++count;
+      on_axis += distance(cpts[v], cpts[std::size_t(end_to_end.mirror[v])]) <= 2. * capsule.mean_edge_length;
+    }
+  std::cout << "[ reflection_axis ] bent capsule, refined global reflection: " << caxis.polylines.size()
+            << " polyline(s), " << count << " vertices, " << 100. * double(on_axis) / double((std::max)(count, std::size_t(1)))
+            << " % within 2 edges of their true mirror image" << std::endl;
+  ASSERT_GT(count, 0u);
+  EXPECT_GE(double(on_axis), 0.9 * double(count));
+
+  // a partner that is no vertex
+  std::vector<long> bad(shape.symmetries[0].mirror.begin(), shape.symmetries[0].mirror.end());
+  bad[5] = long(pts.size());
+  expect_input_error([&] { IRS::reflection_axis(tm, as_map(bad)); }, IRS::Input_problem::invalid_parameter, "partner");
+}
+
 TEST(Curves, PairsConsistentWithMapAreThePairsItSwaps)
 {
   // the capsule's z = 0 plane: the pairs steered by its mirror are kept,

@@ -11,6 +11,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/parameters.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_level_set.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_mesh.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/global_reflection.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/symmetric_map_dense.h>
@@ -891,6 +892,148 @@ double curve_held_share(const TriangleMesh& tm, const Irsa_curve& curve, VertexP
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// The axis of a reflection given as a map (as from `global_reflection_map()`
+/// or `symmetric_vertex_map()`): the curve between the vertices the map
+/// moves far to one side and those it moves far to the other, the zero level
+/// set of `f(v) = d(v, A) - d(v, B)`, with `A` and `B` the two sides of the
+/// vertices whose partner lies farther than 0.2 `sqrt(area)` from them in
+/// space and `d` the distance along the mesh edges to the nearest of them.
+/// For a reflection a point is as far from both sides exactly on the axis
+/// (the mirror of a path to one side leads to the other as far); and the
+/// nearest moved vertices decide, so a pose that distorts the shape
+/// elsewhere does not move the axis, as it moves the bisector of a pair of
+/// distant landmarks. Each connected set of moved vertices goes to side `A`
+/// where its vertices are nearer the vertex moved farthest than that
+/// vertex's image (in sum), else to `B`, and their partners to the other
+/// side, so that a part the map leaves out on one side is still placed by
+/// its mirror (a vertex placed on both sides counts on neither). Polylines shorter than a tenth of
+/// the longest are dropped (small loops where a noisy map moves a few
+/// vertices the wrong way). Meant for a map that is not the map of a
+/// curve's region: where `irsym --tries` takes the global reflection over
+/// the whole shape (`takes_whole_shape_reflection()`), the run's first curve
+/// can stray from that map's axis, and this axis replaces it.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+/// \tparam VertexPartnerMap a model of `ReadablePropertyMap` with the vertex
+///         descriptor as key and a signed integral value type (vertex index, or -1)
+///
+/// \param tm the mesh (read only)
+/// \param partner the partner of every vertex, or -1
+/// \param np optional named parameters: `vertex_point_map`, `vertex_index_map`
+///        and `face_index_map`, as for `symmetric_vertex_map()`
+///
+/// \returns the axis as an `Irsa_curve`: `polylines` (at each crossing edge
+///          of the level set its endpoint of smaller |f|, in order along the
+///          curve) and `closed`; `boundary_length`, the length of the level set
+///          kept; and as `support`, how nearly the map holds each vertex in
+///          place, `1 - |v p(v)| / (consistent_pair_tolerance sqrt(area))`
+///          clamped to [0, 1] (0 without a partner). No voting pair: the other
+///          members keep their defaults. No polyline where the map moves
+///          nothing that far (the identity) or all to one side.
+/// \throws Input_error (`invalid_parameter`) if a partner is not a vertex index of `tm`
+template <typename TriangleMesh, typename VertexPartnerMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Irsa_curve reflection_axis(const TriangleMesh& tm, VertexPartnerMap partner,
+                           const CGAL_NP_CLASS& np = parameters::default_values())
+{
+  const internal::Curves_mesh m = internal::make_curves_mesh(tm, np);
+  const std::size_t n = m.number_of_vertices;
+  const std::vector<long long> image =
+    internal::read_partners(tm, partner, CGAL::get_initialized_vertex_index_map(tm, np), n);
+  const double unit = std::sqrt(m.area);
+  Irsa_curve axis;
+  // the vertices the map moves far: each on one side of the axis
+  std::vector<char> moved(n, 0);
+  std::size_t farthest = internal::Curves_mesh::none;
+  double farthest_move = 0.;
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    if(image[v] < 0) continue;
+    const double move = m.distance(v, std::size_t(image[v]));
+    moved[v] = move > 0.2 * unit;
+    if(move > farthest_move) { farthest_move = move; farthest = v; }
+  }
+  if(farthest == internal::Curves_mesh::none || !moved[farthest]) return axis;
+
+  // the sides: each connected set of moved vertices (along the mesh edges)
+  // on the side its vertices are nearer on average, the vertex moved
+  // farthest or its image
+  internal::Edge_dijkstra dijkstra(m);
+  auto distances_from = [&](const std::vector<std::pair<std::size_t, double>>& sources) {
+    dijkstra.run(sources);
+    std::vector<double> d(n);
+    for(std::size_t v = 0; v < n; ++v) d[v] = dijkstra.distance(v);
+    return d;
+  };
+  const std::vector<double> to_farthest = distances_from({{farthest, 0.}});
+  const std::vector<double> to_image = distances_from({{std::size_t(image[farthest]), 0.}});
+  std::vector<char> on_first(n, 0), on_second(n, 0), seen(n, 0);
+  std::vector<std::size_t> set;
+  for(std::size_t s0 = 0; s0 < n; ++s0)
+  {
+    if(!moved[s0] || seen[s0]) continue;
+    set.assign(1, s0);
+    seen[s0] = 1;
+    double nearer = 0.; // sum of d(v, image of the farthest) - d(v, farthest)
+    for(std::size_t i = 0; i < set.size(); ++i)
+    {
+      const std::size_t v = set[i];
+      if(std::isfinite(to_farthest[v]) && std::isfinite(to_image[v])) nearer += to_image[v] - to_farthest[v];
+      for(std::size_t k = m.adjacency_offsets[v]; k < m.adjacency_offsets[v + 1]; ++k)
+      {
+        const std::size_t u = m.adjacency[k];
+        if(moved[u] && !seen[u]) { seen[u] = 1; set.push_back(u); }
+      }
+    }
+    if(nearer == 0.) continue; // a set the farthest pair does not place
+    // each vertex on its side and its image on the other: where the map
+    // leaves a part of one side out, its mirror still places that part
+    for(std::size_t v : set)
+    {
+      (nearer > 0. ? on_first : on_second)[v] = 1;
+      (nearer > 0. ? on_second : on_first)[std::size_t(image[v])] = 1;
+    }
+  }
+  std::vector<std::pair<std::size_t, double>> first_side, second_side;
+  for(std::size_t v = 0; v < n; ++v)
+    if(on_first[v] != on_second[v]) (on_first[v] ? first_side : second_side).emplace_back(v, 0.); // not both
+  if(first_side.empty() || second_side.empty()) return axis;
+  const std::vector<double> to_first = distances_from(first_side);
+  const std::vector<double> to_second = distances_from(second_side);
+
+  // the axis: the zero level set of d(., first side) - d(., second side)
+  std::vector<float> f(n);
+  for(std::size_t v = 0; v < n; ++v) f[v] = float(to_first[v] - to_second[v]);
+  std::vector<std::size_t> all(n);
+  for(std::size_t v = 0; v < n; ++v) all[v] = v;
+  std::vector<internal::Level_set_polyline> polylines;
+  internal::Level_set_tracer(m).trace_function([&f](std::size_t v) { return f[v]; },
+                                               [&f](std::size_t v) { return std::isfinite(f[v]); }, all, polylines);
+  auto length = [](const internal::Level_set_polyline& pl) {
+    double l = 0.;
+    for(double w : pl.weights) l += w;
+    return l;
+  };
+  double longest = 0.;
+  for(const auto& pl : polylines) longest = (std::max)(longest, length(pl));
+  const double held_within = consistent_pair_tolerance * unit;
+  for(const auto& pl : polylines)
+  {
+    if(length(pl) < 0.1 * longest) continue;
+    axis.polylines.push_back(pl.vertices);
+    axis.closed.push_back(pl.closed);
+    axis.boundary_length += length(pl);
+    std::vector<double> held(pl.vertices.size(), 0.);
+    for(std::size_t i = 0; i < held.size(); ++i)
+    {
+      const long long p = image[pl.vertices[i]];
+      if(p >= 0) held[i] = (std::max)(0., 1. - m.distance(pl.vertices[i], std::size_t(p)) / held_within);
+    }
+    axis.support.push_back(std::move(held));
+  }
+  return axis;
+}
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// Whether a map reverses the orientation of the surface, as a reflection
 /// does and a rotation does not: the share of the area (one third of each
 /// face to each corner) around which the map turns the surface over. Around a
@@ -1207,6 +1350,20 @@ Whole_shape_reflection whole_shape_reflection(const TriangleMesh& tm, const Curv
   }
   w.reversing_share = orientation_reversing_share(tm, as_map(global));
   return w;
+}
+
+/// Where the guided run takes the whole-shape map `whole`: its first curve
+/// follows that map's axis (`reflection_axis()`), keeping its voting record
+/// (the pairs voted for the same reflection); unchanged where no axis is found.
+template <class TriangleMesh, class Partner>
+void follow_reflection_axis(const TriangleMesh& tm, std::vector<Partner>& whole, Irsa_curve& curve)
+{
+  Irsa_curve axis =
+    reflection_axis(tm, boost::make_iterator_property_map(whole.begin(), get(boost::vertex_index, tm)));
+  if(axis.polylines.empty()) return;
+  curve.polylines = std::move(axis.polylines);
+  curve.closed = std::move(axis.closed);
+  curve.support = std::move(axis.support);
 }
 
 } // namespace internal

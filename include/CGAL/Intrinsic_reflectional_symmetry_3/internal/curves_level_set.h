@@ -66,11 +66,20 @@ public:
   void trace(const Geodesic_distance_matrix& D, std::size_t a, std::size_t b,
              const std::vector<std::size_t>& boundary, std::vector<Level_set_polyline>& out)
   {
-    out.clear();
     const float* ra = D.row(a);
     const float* rb = D.row(b);
-    auto f = [&](std::size_t v) { return ra[v] - rb[v]; };
-    auto finite = [&](std::size_t v) { return std::isfinite(ra[v]) && std::isfinite(rb[v]); };
+    trace_function([&](std::size_t v) { return ra[v] - rb[v]; },
+                   [&](std::size_t v) { return std::isfinite(ra[v]) && std::isfinite(rb[v]); }, boundary, out);
+  }
+
+  /// The same for any vertex function `f` (float values; `finite(v)` says
+  /// where it is defined): its zero level set near `boundary`, every crossing
+  /// edge having one endpoint in it (all vertices will do).
+  template <class F, class Finite>
+  void trace_function(const F& f, const Finite& finite, const std::vector<std::size_t>& boundary,
+                      std::vector<Level_set_polyline>& out)
+  {
+    out.clear();
     next_stamp();
 
     // crossing edges around beta, in increasing edge order

@@ -210,11 +210,14 @@ void nearest_rows(const Eigen::MatrixXd& P, const Eigen::MatrixXd& C, const std:
 /// |subset| x rows x k per size; the samples of the region, spread evenly,
 /// determine C as well as all rows do (all rows are used when the subset
 /// has fewer than 2 k1 rows).
-/// With `last_map`, the C of the last size is written there.
+/// With `last_map`, the C of the last size is written there. With `held`,
+/// those rows join the fit as their own partners, whatever `image` says
+/// (points of the axis, which a reflection fixes).
 template <class ConcurrencyTag>
 void zoomout(const Region_spectrum& s, std::size_t k0, std::size_t k1, std::size_t step,
              const std::vector<std::size_t>& subset, std::vector<std::size_t>& image,
-             const std::vector<signed char>* side = nullptr, Eigen::MatrixXd* last_map = nullptr)
+             const std::vector<signed char>* side = nullptr, Eigen::MatrixXd* last_map = nullptr,
+             const std::vector<std::size_t>* held = nullptr)
 {
   const std::size_t n = s.rows.size();
   k1 = (std::min)(k1, std::size_t(s.basis.cols()));
@@ -227,12 +230,16 @@ void zoomout(const Region_spectrum& s, std::size_t k0, std::size_t k1, std::size
   for(std::size_t k = k0;; k = (std::min)(k + step, k1))
   {
     const Eigen::MatrixXd P = s.basis.leftCols(Eigen::Index(k));
-    Eigen::MatrixXd A(Eigen::Index(rows.size()), P.cols()), B(Eigen::Index(rows.size()), P.cols());
+    const std::size_t nh = held != nullptr ? held->size() : 0;
+    Eigen::MatrixXd A(Eigen::Index(rows.size() + nh), P.cols()), B(Eigen::Index(rows.size() + nh), P.cols());
     for(std::size_t i = 0; i < rows.size(); ++i)
     {
       A.row(Eigen::Index(i)) = P.row(Eigen::Index(rows[i]));
       B.row(Eigen::Index(i)) = P.row(Eigen::Index(image[rows[i]]));
     }
+    for(std::size_t i = 0; i < nh; ++i)
+      A.row(Eigen::Index(rows.size() + i)) = B.row(Eigen::Index(rows.size() + i)) =
+        P.row(Eigen::Index((*held)[i]));
     // least squares would be (A^T A)^-1 A^T B; A^T A is near a multiple of
     // the identity for evenly spread rows, and the scale goes with the SVD
     Eigen::MatrixXd C = A.transpose() * B;
@@ -250,49 +257,81 @@ void zoomout(const Region_spectrum& s, std::size_t k0, std::size_t k1, std::size
 /// Refines the mirror partners `best` (vertex indices; `best[i]` for
 /// `verts[i]`, the vertices of a region) by ZoomOut with up to
 /// `number_of_eigenfunctions` functions (from 30, 5 at a time), iterating on
-/// the samples of D in the region (`sample_vertices`, in farthest-point
-/// order; the first 1000 of them). The vertices of the region on no face of it
-/// keep their partner; so does every vertex when the region has too few
-/// vertices (fewer than 4 per function, or fewer than 10 functions) or
-/// the eigensolver does not converge. With `vertex_side` (by vertex index:
-/// -1, 0 or +1), no vertex goes to a vertex on its own side (nearest_rows()).
-/// Returns true if the map was refined.
+/// the samples of the region (`sample_vertices`, in farthest-point order;
+/// the first 1000 of them). The vertices of the region on no face of it keep
+/// their partner; so does every vertex when the region has too few vertices
+/// (fewer than 4 per function, or fewer than 10 functions) or the eigensolver
+/// does not converge (`ok()` is then false). The spectrum is computed once,
+/// for any number of refinements.
+class Spectral_refinement
+{
+public:
+  Spectral_refinement(const Curves_mesh& m, const std::vector<std::size_t>& sample_vertices,
+                      const std::vector<std::size_t>& verts, const std::vector<unsigned char>& in_region,
+                      std::size_t number_of_eigenfunctions)
+    : row_of_(m.number_of_vertices, none), slot_(m.number_of_vertices, none)
+  {
+    if(!region_spectrum(m, in_region, number_of_eigenfunctions, spec_, 10)) return;
+    for(std::size_t r = 0; r < spec_.rows.size(); ++r) row_of_[spec_.rows[r]] = r;
+    for(std::size_t i = 0; i < verts.size(); ++i) slot_[verts[i]] = i;
+    // the first samples in farthest-point order are spread evenly; 1000 of
+    // them fix C as well as 3000 do (FAUST: the same rates) at a third of the
+    // cost of the nearest-row searches
+    const std::size_t max_subset = 1000;
+    for(std::size_t v : sample_vertices)
+      if(row_of_[v] != none && subset_.size() < max_subset) subset_.push_back(row_of_[v]);
+    std::sort(subset_.begin(), subset_.end());
+    subset_.erase(std::unique(subset_.begin(), subset_.end()), subset_.end());
+  }
+
+  bool ok() const { return !spec_.rows.empty(); }
+
+  /// Refines `best` (nothing if not `ok()`). With `vertex_side` (by vertex
+  /// index: -1, 0 or +1), no vertex goes to a vertex on its own side
+  /// (nearest_rows()); with `held_vertices`, those of the region join each
+  /// fit as their own partners (zoomout()).
+  template <class ConcurrencyTag>
+  void refine(std::vector<std::size_t>& best, const std::vector<signed char>* vertex_side = nullptr,
+              const std::vector<std::size_t>* held_vertices = nullptr) const
+  {
+    if(!ok()) return;
+    std::vector<std::size_t> image(spec_.rows.size());
+    for(std::size_t r = 0; r < spec_.rows.size(); ++r)
+    {
+      const std::size_t b = best[slot_[spec_.rows[r]]];
+      image[r] = (b != none && row_of_[b] != none) ? row_of_[b] : r;
+    }
+    std::vector<signed char> side;
+    if(vertex_side != nullptr)
+      for(std::size_t v : spec_.rows) side.push_back((*vertex_side)[v]);
+    std::vector<std::size_t> held;
+    if(held_vertices != nullptr)
+      for(std::size_t v : *held_vertices)
+        if(row_of_[v] != none) held.push_back(row_of_[v]);
+    zoomout<ConcurrencyTag>(spec_, 30, std::size_t(spec_.basis.cols()), 5, subset_, image,
+                            vertex_side != nullptr ? &side : nullptr, nullptr,
+                            held_vertices != nullptr ? &held : nullptr);
+    for(std::size_t r = 0; r < spec_.rows.size(); ++r)
+      best[slot_[spec_.rows[r]]] = spec_.rows[image[r]];
+  }
+
+private:
+  static constexpr std::size_t none = std::size_t(-1);
+  Region_spectrum spec_;
+  std::vector<std::size_t> row_of_, slot_, subset_;
+};
+
+/// Spectral_refinement, once. Returns true if the map was refined.
 template <class ConcurrencyTag>
 bool spectral_refinement(const Curves_mesh& m, const std::vector<std::size_t>& sample_vertices,
                          const std::vector<std::size_t>& verts, const std::vector<unsigned char>& in_region,
                          std::size_t number_of_eigenfunctions, std::vector<std::size_t>& best,
-                         const std::vector<signed char>* vertex_side = nullptr)
+                         const std::vector<signed char>* vertex_side = nullptr,
+                         const std::vector<std::size_t>* held_vertices = nullptr)
 {
-  const std::size_t none = std::size_t(-1);
-  Region_spectrum spec;
-  if(!region_spectrum(m, in_region, number_of_eigenfunctions, spec, 10)) return false;
-  const std::size_t k = std::size_t(spec.basis.cols());
-
-  std::vector<std::size_t> row_of(m.number_of_vertices, none), slot(m.number_of_vertices, none);
-  for(std::size_t r = 0; r < spec.rows.size(); ++r) row_of[spec.rows[r]] = r;
-  for(std::size_t i = 0; i < verts.size(); ++i) slot[verts[i]] = i;
-  std::vector<std::size_t> image(spec.rows.size());
-  for(std::size_t r = 0; r < spec.rows.size(); ++r)
-  {
-    const std::size_t b = best[slot[spec.rows[r]]];
-    image[r] = (b != none && row_of[b] != none) ? row_of[b] : r;
-  }
-  // the first samples in farthest-point order are spread evenly; 1000 of
-  // them fix C as well as 3000 do (FAUST: the same rates) at a third of the
-  // cost of the nearest-row searches
-  const std::size_t max_subset = 1000;
-  std::vector<std::size_t> subset;
-  for(std::size_t v : sample_vertices)
-    if(row_of[v] != none && subset.size() < max_subset) subset.push_back(row_of[v]);
-  std::sort(subset.begin(), subset.end());
-  subset.erase(std::unique(subset.begin(), subset.end()), subset.end());
-  std::vector<signed char> side;
-  if(vertex_side != nullptr)
-    for(std::size_t v : spec.rows) side.push_back((*vertex_side)[v]);
-  zoomout<ConcurrencyTag>(spec, 30, k, 5, subset, image, vertex_side != nullptr ? &side : nullptr);
-  for(std::size_t r = 0; r < spec.rows.size(); ++r)
-    best[slot[spec.rows[r]]] = spec.rows[image[r]];
-  return true;
+  const Spectral_refinement refinement(m, sample_vertices, verts, in_region, number_of_eigenfunctions);
+  refinement.template refine<ConcurrencyTag>(best, vertex_side, held_vertices);
+  return refinement.ok();
 }
 
 } // namespace internal

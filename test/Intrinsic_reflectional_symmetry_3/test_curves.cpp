@@ -1022,47 +1022,73 @@ double share_near_mirror(const std::vector<Point>& pts, const std::vector<std::p
   return double(ok) / double(map.size());
 }
 
+// A generated shape as one region of the spectral refinement: every vertex
+// in it, `number_of_samples` farthest-point samples, and the share of a map
+// within two edges of the shape's first known mirror.
+struct Whole_shape_region
+{
+  Whole_shape_region(const IRS::Generated_shape<Mesh>& shape, std::size_t number_of_samples)
+    : shape(shape), pts(vertex_points(shape.mesh)),
+      m(IRS::internal::make_curves_mesh(shape.mesh, IRS::parameters::default_values())),
+      verts(m.number_of_vertices), in_region(m.number_of_vertices, 1),
+      samples(IRS::farthest_point_samples(shape.mesh,
+                                          IRS::parameters::number_of_samples(number_of_samples).random_seed(1u)))
+  {
+    std::iota(verts.begin(), verts.end(), std::size_t(0));
+  }
+
+  double share(const std::vector<std::size_t>& map) const
+  {
+    return share_near_mirror(pts, shape.symmetries[0].mirror, map, 2. * shape.mean_edge_length);
+  }
+
+  // `map` refined with 150 functions, in parallel; the sequential run must give the same
+  std::vector<std::size_t> refined(std::vector<std::size_t> map, const std::vector<signed char>* side = nullptr,
+                                   const std::vector<std::size_t>* held = nullptr) const
+  {
+    std::vector<std::size_t> sequential = map;
+    EXPECT_TRUE(IRS::internal::spectral_refinement<CGAL::Parallel_if_available_tag>(m, samples, verts, in_region,
+                                                                                    150, map, side, held));
+    EXPECT_TRUE(IRS::internal::spectral_refinement<CGAL::Sequential_tag>(m, samples, verts, in_region, 150,
+                                                                         sequential, side, held));
+    EXPECT_EQ(map, sequential); // the same at any thread count
+    return map;
+  }
+
+  const IRS::Generated_shape<Mesh>& shape;
+  const std::vector<Point> pts;
+  const IRS::internal::Curves_mesh m;
+  std::vector<std::size_t> verts;
+  const std::vector<unsigned char> in_region;
+  const std::vector<std::size_t> samples;
+};
+
 TEST(Curves, SpectralRefinementMendsAWrongPatch)
 {
   // the x=0 mirror map of an ellipsoid (three distinct axes: no other
   // isometry nearby), with the vertices of one quadrant of one side mapped to
   // themselves, as the landmark match did on FAUST tr_reg_002's head
   const auto shape = IRS::generate_ellipsoid<Mesh>(2000);
-  const std::vector<Point> pts = vertex_points(shape.mesh);
   const IRS::Known_symmetry& s = shape.symmetries[0];
   ASSERT_EQ(s.name, "x=0 plane");
-  const IRS::internal::Curves_mesh m = IRS::internal::make_curves_mesh(shape.mesh, IRS::parameters::default_values());
-  std::vector<std::size_t> verts(m.number_of_vertices), best(m.number_of_vertices);
-  std::iota(verts.begin(), verts.end(), std::size_t(0));
+  const Whole_shape_region r(shape, 400);
   double xmax = 0.;
-  for(const Point& p : pts) xmax = (std::max)(xmax, p.x());
+  for(const Point& p : r.pts) xmax = (std::max)(xmax, p.x());
+  std::vector<std::size_t> best(r.verts.size());
   std::size_t wrong = 0;
-  for(std::size_t v = 0; v < verts.size(); ++v)
+  for(std::size_t v = 0; v < r.verts.size(); ++v)
   {
     ASSERT_GE(s.mirror[v], 0);
-    const bool patch = pts[v].x() > 0.25 * xmax && pts[v].y() > 0.;
+    const bool patch = r.pts[v].x() > 0.25 * xmax && r.pts[v].y() > 0.;
     best[v] = patch ? v : std::size_t(s.mirror[v]);
     wrong += patch;
   }
-  auto share = [&](const std::vector<std::size_t>& map) {
-    return share_near_mirror(pts, s.mirror, map, 2. * shape.mean_edge_length);
-  };
-  const double before = share(best);
-  const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(shape.mesh, IRS::parameters::number_of_samples(400).random_seed(1u));
-  const std::vector<unsigned char> in_region(m.number_of_vertices, 1);
-  std::vector<std::size_t> sequential = best;
-  ASSERT_TRUE(IRS::internal::spectral_refinement<CGAL::Parallel_if_available_tag>(m, samples, verts, in_region,
-                                                                                  150, best));
-  ASSERT_TRUE(IRS::internal::spectral_refinement<CGAL::Sequential_tag>(m, samples, verts, in_region, 150,
-                                                                       sequential));
-  const double after = share(best);
-  std::cout << "[ spectral refinement ] ellipsoid, " << wrong << " of " << verts.size()
+  const double before = r.share(best), after = r.share(r.refined(best));
+  std::cout << "[ spectral refinement ] ellipsoid, " << wrong << " of " << r.verts.size()
             << " vertices mapped to themselves: " << 100. * before << " % -> " << 100. * after
             << " % within 2 edges of the true mirror" << std::endl;
   EXPECT_LE(before, 0.9);
   EXPECT_GE(after, 0.98);
-  EXPECT_EQ(best, sequential); // the same at any thread count
 }
 
 TEST(Curves, FixedPointShareCountsVerticesKeptInPlaceFarFromTheCurve)
@@ -1428,38 +1454,22 @@ TEST(Curves, SpectralRefinementWithSidesMendsHandsMappedToThemselves)
   // hands: the projection alone keeps such an extremity; the side rule (no
   // vertex beyond |x| = 0.2 maps to its own side) mends it
   const auto shape = IRS::generate_stick_figure<Mesh>(3000);
-  const std::vector<Point> pts = vertex_points(shape.mesh);
   const IRS::Known_symmetry& s = shape.symmetries[0];
-  const IRS::internal::Curves_mesh m = IRS::internal::make_curves_mesh(shape.mesh, IRS::parameters::default_values());
-  std::vector<std::size_t> verts(m.number_of_vertices), best(m.number_of_vertices);
-  std::iota(verts.begin(), verts.end(), std::size_t(0));
-  std::vector<signed char> side(m.number_of_vertices, 0);
-  for(std::size_t v = 0; v < verts.size(); ++v)
+  const Whole_shape_region r(shape, 600);
+  std::vector<std::size_t> best(r.verts.size());
+  std::vector<signed char> side(r.verts.size(), 0);
+  for(std::size_t v = 0; v < r.verts.size(); ++v)
   {
     ASSERT_GE(s.mirror[v], 0);
-    best[v] = std::abs(pts[v].x()) > 1.1 ? v : std::size_t(s.mirror[v]);
-    side[v] = pts[v].x() > 0.2 ? 1 : (pts[v].x() < -0.2 ? -1 : 0);
+    best[v] = std::abs(r.pts[v].x()) > 1.1 ? v : std::size_t(s.mirror[v]);
+    side[v] = r.pts[v].x() > 0.2 ? 1 : (r.pts[v].x() < -0.2 ? -1 : 0);
   }
-  auto share = [&](const std::vector<std::size_t>& map) {
-    return share_near_mirror(pts, s.mirror, map, 2. * shape.mean_edge_length);
-  };
-  const double before = share(best);
-  const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(shape.mesh, IRS::parameters::number_of_samples(600).random_seed(1u));
-  const std::vector<unsigned char> in_region(m.number_of_vertices, 1);
-  std::vector<std::size_t> without = best, sequential = best;
-  ASSERT_TRUE(IRS::internal::spectral_refinement<CGAL::Parallel_if_available_tag>(m, samples, verts, in_region,
-                                                                                  150, without));
-  ASSERT_TRUE(IRS::internal::spectral_refinement<CGAL::Parallel_if_available_tag>(m, samples, verts, in_region,
-                                                                                  150, best, &side));
-  ASSERT_TRUE(IRS::internal::spectral_refinement<CGAL::Sequential_tag>(m, samples, verts, in_region, 150,
-                                                                       sequential, &side));
+  const double before = r.share(best), without = r.share(r.refined(best)), with = r.share(r.refined(best, &side));
   std::cout << "[ spectral refinement ] stick figure (" << s.name << "), outer arms mapped to themselves: "
-            << 100. * before << " % -> " << 100. * share(without) << " % without the side rule, "
-            << 100. * share(best) << " % with it (within 2 edges of the true mirror)" << std::endl;
-  EXPECT_GE(share(best), 0.98);
-  EXPECT_GT(share(best), share(without));
-  EXPECT_EQ(best, sequential); // the same at any thread count
+            << 100. * before << " % -> " << 100. * without << " % without the side rule, " << 100. * with
+            << " % with it (within 2 edges of the true mirror)" << std::endl;
+  EXPECT_GE(with, 0.98);
+  EXPECT_GT(with, without);
 }
 
 TEST(Curves, SpectralRefinementHoldingTheAxisTurnsAReflectionOntoIt)
@@ -1472,43 +1482,28 @@ TEST(Curves, SpectralRefinementHoldingTheAxisTurnsAReflectionOntoIt)
   // turns the map onto that reflection (from 30 degrees on, only part way);
   // as on SCAPE mesh024, whose near-round head mapped turned about the neck
   const auto shape = IRS::generate_snowman<Mesh>(2500);
-  const std::vector<Point> pts = vertex_points(shape.mesh);
   const IRS::Known_symmetry& s = shape.symmetries[0];
   ASSERT_EQ(s.name, "x=0 plane");
-  const IRS::internal::Curves_mesh m = IRS::internal::make_curves_mesh(shape.mesh, IRS::parameters::default_values());
-  std::vector<std::size_t> verts(m.number_of_vertices), best(m.number_of_vertices);
-  std::iota(verts.begin(), verts.end(), std::size_t(0));
+  const Whole_shape_region r(shape, 400);
   const double angle = std::acos(-1.) / 9., nx = std::cos(angle), ny = std::sin(angle); // plane normal
-  for(std::size_t v = 0; v < verts.size(); ++v)
+  std::vector<std::size_t> best(r.verts.size());
+  for(std::size_t v = 0; v < r.verts.size(); ++v)
   {
-    const Point& p = pts[v];
+    const Point& p = r.pts[v];
     const double d = 2. * (nx * p.x() + ny * p.y());
     const Point q(p.x() - d * nx, p.y() - d * ny, p.z());
     double nearest = std::numeric_limits<double>::infinity();
-    for(std::size_t u = 0; u < pts.size(); ++u)
-      if(CGAL::squared_distance(q, pts[u]) < nearest) { nearest = CGAL::squared_distance(q, pts[u]); best[v] = u; }
+    for(std::size_t u = 0; u < r.pts.size(); ++u)
+      if(CGAL::squared_distance(q, r.pts[u]) < nearest) { nearest = CGAL::squared_distance(q, r.pts[u]); best[v] = u; }
   }
-  auto share = [&](const std::vector<std::size_t>& map) {
-    return share_near_mirror(pts, s.mirror, map, 2. * shape.mean_edge_length);
-  };
-  const double before = share(best);
-  const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(shape.mesh, IRS::parameters::number_of_samples(400).random_seed(1u));
-  const std::vector<unsigned char> in_region(m.number_of_vertices, 1);
-  std::vector<std::size_t> free_map = best, sequential = best;
-  ASSERT_TRUE(IRS::internal::spectral_refinement<CGAL::Parallel_if_available_tag>(m, samples, verts, in_region,
-                                                                                  150, free_map));
-  ASSERT_TRUE(IRS::internal::spectral_refinement<CGAL::Parallel_if_available_tag>(m, samples, verts, in_region,
-                                                                                  150, best, nullptr, &s.axis));
-  ASSERT_TRUE(IRS::internal::spectral_refinement<CGAL::Sequential_tag>(m, samples, verts, in_region, 150,
-                                                                       sequential, nullptr, &s.axis));
-  std::cout << "[ spectral refinement ] snowman, the 20 degree plane's reflection: " << 100. * before
-            << " % -> " << 100. * share(free_map) << " % free, " << 100. * share(best)
+  const double before = r.share(best), free_map = r.share(r.refined(best)),
+               held = r.share(r.refined(best, nullptr, &s.axis));
+  std::cout << "[ spectral refinement ] snowman, the 20 degree plane's reflection: " << 100. * before << " % -> "
+            << 100. * free_map << " % free, " << 100. * held
             << " % holding the x=0 axis (within 2 edges of the x=0 mirror)" << std::endl;
   EXPECT_LE(before, 0.2);
-  EXPECT_LE(share(free_map), 0.2);
-  EXPECT_GE(share(best), 0.95);
-  EXPECT_EQ(best, sequential); // the same at any thread count
+  EXPECT_LE(free_map, 0.2);
+  EXPECT_GE(held, 0.95);
 }
 
 TEST(Curves, LocalRoundsTakeFixedPointsOnTheAxisOnly)

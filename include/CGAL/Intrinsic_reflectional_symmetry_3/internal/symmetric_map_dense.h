@@ -225,7 +225,7 @@ class Map_distortion
 public:
   Map_distortion(const Curves_mesh& m, const std::vector<std::size_t>& candidates, const std::vector<long long>& label,
                  std::size_t number_of_landmarks = 150)
-    : m_(m), label_(label), dijkstra_(m)
+    : m_(m), dijkstra_(m)
   {
     if(candidates.empty()) return;
     // farthest-point landmarks; the distances between them (to_earlier_[j][i] = d(l_j, l_i), i < j)
@@ -248,6 +248,7 @@ public:
       if(!(far > 0.)) break; // every candidate is a landmark or at distance 0 from one
       landmarks_.push_back(next);
     }
+    for(std::size_t l : landmarks_) landmark_label_.push_back(label[l]);
   }
 
   /// the distortion of the map `image` (by vertex; a partner for every candidate)
@@ -261,7 +262,7 @@ public:
         std::vector<std::pair<std::size_t, double>>(1, std::make_pair(std::size_t(image[landmarks_[j]]), 0.)));
       for(std::size_t i = 0; i < j; ++i)
       {
-        if(label_[landmarks_[i]] != label_[landmarks_[j]]) continue;
+        if(landmark_label_[i] != landmark_label_[j]) continue;
         // pairs in different components of the mesh (infinite distances) do not count
         const double a = to_earlier_[j][i], b = dijkstra_.distance(std::size_t(image[landmarks_[i]]));
         if(std::isfinite(a) && std::isfinite(b)) { sum += std::abs(a - b); ++pairs; }
@@ -272,9 +273,9 @@ public:
 
 private:
   const Curves_mesh& m_;
-  const std::vector<long long>& label_;
   mutable Edge_dijkstra dijkstra_;
   std::vector<std::size_t> landmarks_;
+  std::vector<long long> landmark_label_;
   std::vector<std::vector<double>> to_earlier_;
 };
 
@@ -397,37 +398,39 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
     const bool use_sides = double(kept_side) <= st.side_violations * double(off_band);
     const Spectral_refinement refinement(m, D.sources(), verts, in_region, st.eigenfunctions);
     moved = refinement.ok();
-    std::vector<std::size_t> held = best;
-    refinement.template refine<ConcurrencyTag>(best, use_sides ? &side : nullptr);
-    // Again with the curve held in place (its vertices, one per sample
-    // spacing along each polyline, join each fit as their own partners: a
-    // reflection fixes its axis), keeping the map of least distortion
-    // (isometric_distortion(), in the region). Where the region has a part
-    // nearly symmetric under turns (a head about the neck), ZoomOut keeps it
-    // turned, an isometry of the part that the rest of the map does not
-    // pin: SCAPE mesh024, seed 2, its nose mapped 0.147 sqrt(area) away
-    // (distortion 0.0210, 90.9 % CR); held, 0.0205 and 100 %. Held always,
-    // a curve off the axis pulls the map off (FAUST tr_reg_000, 99.5 ->
-    // 95.1 %, distortion up), hence the comparison.
-    std::vector<std::size_t> axis;
-    const double stride = (std::max)(1., st.sample_spacing / m.mean_edge_length);
-    for(const auto& polyline : curve.polylines)
-      for(double t = 0.; t < double(polyline.size()); t += stride) axis.push_back(polyline[std::size_t(t)]);
-    if(moved && !axis.empty())
+    if(moved)
     {
-      refinement.template refine<ConcurrencyTag>(held, use_sides ? &side : nullptr, &axis);
-      std::vector<std::size_t> mapped;
-      std::vector<long long> free_image(m.number_of_vertices, -1), held_image(m.number_of_vertices, -1);
-      for(std::size_t i = 0; i < verts.size(); ++i)
-        if(best[i] != Mirror_matcher::none && held[i] != Mirror_matcher::none)
-        {
-          mapped.push_back(verts[i]);
-          free_image[verts[i]] = static_cast<long long>(best[i]);
-          held_image[verts[i]] = static_cast<long long>(held[i]);
-        }
-      const std::vector<long long> one_region(m.number_of_vertices, 0);
-      const Map_distortion distortion(m, mapped, one_region);
-      if(distortion(held_image) < distortion(free_image)) best.swap(held);
+      std::vector<std::size_t> held = best; // the landmark map, refined a second time below
+      refinement.template refine<ConcurrencyTag>(best, use_sides ? &side : nullptr);
+      // Again with the curve held in place (its vertices, one per sample
+      // spacing along each polyline, join each fit as their own partners: a
+      // reflection fixes its axis), keeping the map of least distortion
+      // (isometric_distortion(), in the region). Where the region has a part
+      // nearly symmetric under turns (a head about the neck), ZoomOut keeps it
+      // turned, an isometry of the part that the rest of the map does not
+      // pin: SCAPE mesh024, seed 2, its nose mapped 0.147 sqrt(area) away
+      // (distortion 0.0210, 90.9 % CR); held, 0.0205 and 100 %. Held always,
+      // a curve off the axis pulls the map off (FAUST tr_reg_000, 99.5 ->
+      // 95.1 %, distortion up), hence the comparison.
+      std::vector<std::size_t> axis;
+      const double stride = (std::max)(1., st.sample_spacing / m.mean_edge_length);
+      for(const auto& polyline : curve.polylines)
+        for(double t = 0.; t < double(polyline.size()); t += stride) axis.push_back(polyline[std::size_t(t)]);
+      if(!axis.empty())
+      {
+        refinement.template refine<ConcurrencyTag>(held, use_sides ? &side : nullptr, &axis);
+        std::vector<std::size_t> mapped;
+        std::vector<long long> free_image(m.number_of_vertices, -1), held_image(m.number_of_vertices, -1);
+        for(std::size_t i = 0; i < verts.size(); ++i)
+          if(best[i] != Mirror_matcher::none && held[i] != Mirror_matcher::none)
+          {
+            mapped.push_back(verts[i]);
+            free_image[verts[i]] = static_cast<long long>(best[i]);
+            held_image[verts[i]] = static_cast<long long>(held[i]);
+          }
+        const Map_distortion distortion(m, mapped, std::vector<long long>(m.number_of_vertices, 0));
+        if(distortion(held_image) < distortion(free_image)) best.swap(held);
+      }
     }
   }
   if(moved && !landmarks.empty())

@@ -1506,6 +1506,74 @@ TEST(Curves, SpectralRefinementHoldingTheAxisTurnsAReflectionOntoIt)
   EXPECT_GE(held, 0.95);
 }
 
+TEST(Curves, TheMapHoldsItsCurveWhereThatIsLessDistorted)
+{
+  // dense_region_map()'s choice between the free projection and the one
+  // holding the curve, by distortion: the snowman given a turned reflection
+  // and its true axis takes the held map; the ellipsoid given its x=0 mirror
+  // map (one patch wrong) and the axis of another symmetry, y=0, keeps the
+  // free map, which the held one would pull off
+  auto turned_reflection = [](const std::vector<Point>& pts, double angle) {
+    const double nx = std::cos(angle), ny = std::sin(angle); // plane normal
+    std::vector<std::size_t> map(pts.size());
+    for(std::size_t v = 0; v < pts.size(); ++v)
+    {
+      const double d = 2. * (nx * pts[v].x() + ny * pts[v].y());
+      const Point q(pts[v].x() - d * nx, pts[v].y() - d * ny, pts[v].z());
+      double nearest = std::numeric_limits<double>::infinity();
+      for(std::size_t u = 0; u < pts.size(); ++u)
+        if(CGAL::squared_distance(q, pts[u]) < nearest) { nearest = CGAL::squared_distance(q, pts[u]); map[v] = u; }
+    }
+    return map;
+  };
+  auto choose = [](const Whole_shape_region& r, std::vector<std::size_t>& map, const std::vector<std::size_t>& axis) {
+    const IRS::internal::Spectral_refinement refinement(r.m, r.samples, r.verts, r.in_region, 150);
+    std::vector<std::size_t> sequential = map;
+    const bool held = IRS::internal::refine_free_or_held<CGAL::Parallel_if_available_tag>(r.m, refinement, r.verts,
+                                                                                           nullptr, axis, map);
+    EXPECT_EQ(held, IRS::internal::refine_free_or_held<CGAL::Sequential_tag>(r.m, refinement, r.verts, nullptr, axis,
+                                                                             sequential));
+    EXPECT_EQ(map, sequential); // the same at any thread count
+    return held;
+  };
+  auto distortion = [](const Whole_shape_region& r, const std::vector<std::size_t>& map) {
+    const std::vector<long long> image(map.begin(), map.end());
+    return IRS::internal::Map_distortion(r.m, r.verts, std::vector<long long>(r.verts.size(), 0))(image);
+  };
+
+  const auto snowman = IRS::generate_snowman<Mesh>(2500);
+  ASSERT_EQ(snowman.symmetries[0].name, "x=0 plane");
+  const Whole_shape_region r(snowman, 400);
+  std::vector<std::size_t> map = turned_reflection(r.pts, std::acos(-1.) / 9.);
+  const double before = r.share(map);
+  const double free_distortion = distortion(r, r.refined(map));
+  EXPECT_TRUE(choose(r, map, snowman.symmetries[0].axis));
+  std::cout << "[ free or held ] snowman, the 20 degree plane's reflection, the x=0 axis held: " << 100. * before
+            << " % -> " << 100. * r.share(map) << " % (held map kept, distortion " << distortion(r, map)
+            << " against " << free_distortion << " free)" << std::endl;
+  EXPECT_GE(r.share(map), 0.95);
+
+  const auto ellipsoid = IRS::generate_ellipsoid<Mesh>(2000);
+  ASSERT_EQ(ellipsoid.symmetries[0].name, "x=0 plane");
+  ASSERT_EQ(ellipsoid.symmetries[1].name, "y=0 plane");
+  const Whole_shape_region e(ellipsoid, 400);
+  std::vector<std::size_t> mirror(e.verts.size());
+  for(std::size_t v = 0; v < e.verts.size(); ++v)
+  {
+    ASSERT_GE(ellipsoid.symmetries[0].mirror[v], 0);
+    mirror[v] = e.pts[v].x() > 0.5 && e.pts[v].y() > 0. ? v : std::size_t(ellipsoid.symmetries[0].mirror[v]);
+  }
+  const double patched = e.share(mirror);
+  std::vector<std::size_t> held_only = e.refined(mirror, nullptr, &ellipsoid.symmetries[1].axis);
+  EXPECT_FALSE(choose(e, mirror, ellipsoid.symmetries[1].axis));
+  std::cout << "[ free or held ] ellipsoid, x=0 mirror with a patch mapped to itself, the y=0 axis held: "
+            << 100. * patched << " % -> " << 100. * e.share(mirror) << " % (free map kept, distortion "
+            << distortion(e, mirror) << "; held alone " << 100. * e.share(held_only) << " %, distortion "
+            << distortion(e, held_only) << ")" << std::endl;
+  EXPECT_GE(e.share(mirror), 0.98);
+  EXPECT_LT(e.share(held_only), e.share(mirror));
+}
+
 TEST(Curves, LocalRoundsTakeFixedPointsOnTheAxisOnly)
 {
   // the landmarks that the local rounds of the dense map take from a map of

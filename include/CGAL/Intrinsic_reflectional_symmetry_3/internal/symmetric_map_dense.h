@@ -279,6 +279,40 @@ private:
   std::vector<std::vector<double>> to_earlier_;
 };
 
+/// The spectral refinement of `best` (`best[i]` for `verts[i]`), twice:
+/// free, and with the vertices `axis` held in place (they join each fit as
+/// their own partners: a reflection fixes its axis). `best` becomes the map
+/// of lower `Map_distortion` over `verts`; returns true if that is the held
+/// one. Where the region has a part nearly symmetric under turns (a head
+/// about the neck), the free projection keeps it turned, an isometry of the
+/// part that the rest of the map does not pin: SCAPE mesh024, seed 2, its
+/// nose mapped 0.147 sqrt(area) away (distortion 0.0210, 90.9 % CR); held,
+/// 0.0205 and 100 %. Held always, a curve off the axis pulls the map off
+/// (FAUST tr_reg_000, 99.5 -> 95.1 %, distortion up), hence the comparison.
+template <class ConcurrencyTag>
+bool refine_free_or_held(const Curves_mesh& m, const Spectral_refinement& refinement,
+                         const std::vector<std::size_t>& verts, const std::vector<signed char>* side,
+                         const std::vector<std::size_t>& axis, std::vector<std::size_t>& best)
+{
+  std::vector<std::size_t> held = best;
+  refinement.template refine<ConcurrencyTag>(best, side);
+  if(axis.empty() || !refinement.ok()) return false;
+  refinement.template refine<ConcurrencyTag>(held, side, &axis);
+  std::vector<std::size_t> mapped;
+  std::vector<long long> free_image(m.number_of_vertices, -1), held_image(m.number_of_vertices, -1);
+  for(std::size_t i = 0; i < verts.size(); ++i)
+    if(best[i] != Mirror_matcher::none && held[i] != Mirror_matcher::none)
+    {
+      mapped.push_back(verts[i]);
+      free_image[verts[i]] = static_cast<long long>(best[i]);
+      held_image[verts[i]] = static_cast<long long>(held[i]);
+    }
+  const Map_distortion distortion(m, mapped, std::vector<long long>(m.number_of_vertices, 0));
+  if(!(distortion(held_image) < distortion(free_image))) return false;
+  best.swap(held);
+  return true;
+}
+
 /// Dense mirror map of one region: the best partner (curves_mirror.h) of
 /// every vertex of the region among the vertices of the region, refined under
 /// locally weighted landmarks, then spectrally (ZoomOut), made an involution
@@ -400,37 +434,11 @@ void dense_region_map(const Curves_mesh& m, const Geodesic_distance_matrix& D, c
     moved = refinement.ok();
     if(moved)
     {
-      std::vector<std::size_t> held = best; // the landmark map, refined a second time below
-      refinement.template refine<ConcurrencyTag>(best, use_sides ? &side : nullptr);
-      // Again with the curve held in place (its vertices, one per sample
-      // spacing along each polyline, join each fit as their own partners: a
-      // reflection fixes its axis), keeping the map of least distortion
-      // (isometric_distortion(), in the region). Where the region has a part
-      // nearly symmetric under turns (a head about the neck), ZoomOut keeps it
-      // turned, an isometry of the part that the rest of the map does not
-      // pin: SCAPE mesh024, seed 2, its nose mapped 0.147 sqrt(area) away
-      // (distortion 0.0210, 90.9 % CR); held, 0.0205 and 100 %. Held always,
-      // a curve off the axis pulls the map off (FAUST tr_reg_000, 99.5 ->
-      // 95.1 %, distortion up), hence the comparison.
-      std::vector<std::size_t> axis;
+      std::vector<std::size_t> axis; // the curve's vertices, one per sample spacing
       const double stride = (std::max)(1., st.sample_spacing / m.mean_edge_length);
       for(const auto& polyline : curve.polylines)
         for(double t = 0.; t < double(polyline.size()); t += stride) axis.push_back(polyline[std::size_t(t)]);
-      if(!axis.empty())
-      {
-        refinement.template refine<ConcurrencyTag>(held, use_sides ? &side : nullptr, &axis);
-        std::vector<std::size_t> mapped;
-        std::vector<long long> free_image(m.number_of_vertices, -1), held_image(m.number_of_vertices, -1);
-        for(std::size_t i = 0; i < verts.size(); ++i)
-          if(best[i] != Mirror_matcher::none && held[i] != Mirror_matcher::none)
-          {
-            mapped.push_back(verts[i]);
-            free_image[verts[i]] = static_cast<long long>(best[i]);
-            held_image[verts[i]] = static_cast<long long>(held[i]);
-          }
-        const Map_distortion distortion(m, mapped, std::vector<long long>(m.number_of_vertices, 0));
-        if(distortion(held_image) < distortion(free_image)) best.swap(held);
-      }
+      refine_free_or_held<ConcurrencyTag>(m, refinement, verts, use_sides ? &side : nullptr, axis, best);
     }
   }
   if(moved && !landmarks.empty())

@@ -1506,10 +1506,10 @@ TEST(Curves, SpectralRefinementHoldingTheAxisTurnsAReflectionOntoIt)
   EXPECT_GE(held, 0.95);
 }
 
-TEST(Curves, TheMapHoldsItsCurveWhereThatIsLessDistorted)
+TEST(Curves, TheMapHoldsItsCurveWhereThatLowersItsDefect)
 {
   // dense_region_map()'s choice between the free projection and the one
-  // holding the curve, by distortion: the snowman given a turned reflection
+  // holding the curve, by distortion and fixed points: the snowman given a turned reflection
   // and its true axis takes the held map; the ellipsoid given its x=0 mirror
   // map (one patch wrong) and the axis of another symmetry, y=0, keeps the
   // free map, which the held one would pull off
@@ -1530,9 +1530,9 @@ TEST(Curves, TheMapHoldsItsCurveWhereThatIsLessDistorted)
     const IRS::internal::Spectral_refinement refinement(r.m, r.samples, r.verts, r.in_region, 150);
     std::vector<std::size_t> sequential = map;
     const bool held = IRS::internal::refine_free_or_held<CGAL::Parallel_if_available_tag>(r.m, refinement, r.verts,
-                                                                                           nullptr, axis, map);
+                                                                                           nullptr, axis, axis, map);
     EXPECT_EQ(held, IRS::internal::refine_free_or_held<CGAL::Sequential_tag>(r.m, refinement, r.verts, nullptr, axis,
-                                                                             sequential));
+                                                                             axis, sequential));
     EXPECT_EQ(map, sequential); // the same at any thread count
     return held;
   };

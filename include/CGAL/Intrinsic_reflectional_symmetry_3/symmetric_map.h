@@ -357,11 +357,14 @@ std::size_t symmetric_vertex_map(const TriangleMesh& tm, const Geodesic_distance
 /// vertices on their faces keep the landmark match. ZoomOut is run a second
 /// time with the curve's vertices (one per sample spacing) added to each fit
 /// as their own partners, since a reflection fixes its axis, and the map of
-/// the two with the lower `isometric_distortion()` in the region is kept: a
-/// part nearly symmetric under turns (a head about the neck) can stay turned
-/// under the free fit, and a curve off the axis pulls the held one off (on
-/// SCAPE mesh024, seed 2, the held map: 90.9 to 100 %; FAUST tr_reg_000 keeps
-/// the free one).
+/// the two with the lower `symmetric_map_defect()` in the region (its
+/// `isometric_distortion()` and its `fixed_point_share()` about the curve)
+/// is kept: a part nearly symmetric under turns (a head about the neck) can
+/// stay turned under the free fit, and a curve off the axis pulls the held
+/// one off, or holds a patch in place (on SCAPE mesh024, seed 2, the held
+/// map: 90.9 to 100 %; FAUST tr_reg_000 keeps the free one, and so does
+/// tr_reg_005 with seed 1, whose held map is less distorted but holds 1 % of
+/// the far vertices in place).
 ///
 /// The map is made an involution greedily (the pairs (x, best(x)) in
 /// increasing order of the final residual are matched when both ends are
@@ -556,9 +559,8 @@ double fixed_point_share(const TriangleMesh& tm, const CurveRange& curves, Verte
                          const CGAL_NP_CLASS& np = parameters::default_values())
 {
   const internal::Curves_mesh m = internal::make_curves_mesh(tm, np);
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const std::size_t n = m.number_of_vertices;
-  std::vector<std::pair<std::size_t, double>> axis;
+  std::vector<std::size_t> curve_vertices;
   std::size_t c = 0;
   for(const Irsa_curve& curve : curves)
   {
@@ -568,29 +570,12 @@ double fixed_point_share(const TriangleMesh& tm, const CurveRange& curves, Verte
         throw Input_error(Input_problem::invalid_parameter,
                           "curve " + std::to_string(c) + " has vertex index " + std::to_string(v) +
                           " but the mesh has " + std::to_string(n) + " vertices", c);
-      axis.emplace_back(v, 0.);
+      curve_vertices.push_back(v);
     }
     ++c;
   }
-  const std::vector<long long> image = internal::read_partners(tm, partner, vim, n);
-  const double unit = std::sqrt(m.area);
-  const double far_from_axis = 0.1 * unit, near_itself = 0.03 * unit;
-  internal::Edge_dijkstra dijkstra(m);
-  dijkstra.run(axis);
-  std::vector<double> to_axis(n);
-  for(std::size_t v = 0; v < n; ++v) to_axis[v] = dijkstra.distance(v);
-  std::size_t far = 0, fixed = 0;
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    if(image[v] < 0 || !(to_axis[v] > far_from_axis)) continue;
-    ++far;
-    const std::size_t p = std::size_t(image[v]);
-    if(p == v) { ++fixed; continue; }
-    if(m.distance(v, p) > near_itself) continue; // the path along the edges is longer still
-    dijkstra.run(std::vector<std::pair<std::size_t, double>>(1, std::make_pair(v, 0.)), near_itself);
-    fixed += dijkstra.distance(p) <= near_itself;
-  }
-  return far > 0 ? double(fixed) / double(far) : 0.;
+  return internal::fixed_point_share(
+    m, curve_vertices, internal::read_partners(tm, partner, CGAL::get_initialized_vertex_index_map(tm, np), n));
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
@@ -634,7 +619,7 @@ inline bool is_suspect_symmetric_map(double share, double distortion)
 /// above lose mesh016 (89.8 %).
 inline double symmetric_map_defect(double share, double distortion)
 {
-  return distortion + 0.3 * share;
+  return internal::map_defect(share, distortion);
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref

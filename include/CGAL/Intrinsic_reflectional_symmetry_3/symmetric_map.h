@@ -575,7 +575,7 @@ double fixed_point_share(const TriangleMesh& tm, const CurveRange& curves, Verte
     ++c;
   }
   return internal::fixed_point_share(
-    m, curve_vertices, internal::read_partners(tm, partner, CGAL::get_initialized_vertex_index_map(tm, np), n));
+    m, internal::distances_to_curve(m, curve_vertices), internal::read_partners(tm, partner, CGAL::get_initialized_vertex_index_map(tm, np), n));
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref

@@ -279,26 +279,33 @@ private:
   std::vector<std::vector<double>> to_earlier_;
 };
 
-/// `fixed_point_share()` of the map `image` (by vertex, -1 for none) with
-/// the curve vertices `curve_vertices`: the share of the vertices farther
+/// Distance along the mesh edges of every vertex to the nearest of the
+/// curve vertices `curve_vertices`.
+inline std::vector<double> distances_to_curve(const Curves_mesh& m, const std::vector<std::size_t>& curve_vertices)
+{
+  std::vector<std::pair<std::size_t, double>> sources;
+  for(std::size_t v : curve_vertices) sources.emplace_back(v, 0.);
+  Edge_dijkstra dijkstra(m);
+  dijkstra.run(sources);
+  std::vector<double> to_curve(m.number_of_vertices);
+  for(std::size_t v = 0; v < to_curve.size(); ++v) to_curve[v] = dijkstra.distance(v);
+  return to_curve;
+}
+
+/// `fixed_point_share()` of the map `image` (by vertex, -1 for none), given
+/// the `distances_to_curve()` of its curve: the share of the vertices farther
 /// than 0.1 sqrt(area) from the curve whose partner is within 0.03
 /// sqrt(area) of themselves (along the mesh edges).
-inline double fixed_point_share(const Curves_mesh& m, const std::vector<std::size_t>& curve_vertices,
+inline double fixed_point_share(const Curves_mesh& m, const std::vector<double>& to_curve,
                                 const std::vector<long long>& image)
 {
-  const std::size_t n = m.number_of_vertices;
-  std::vector<std::pair<std::size_t, double>> axis;
-  for(std::size_t v : curve_vertices) axis.emplace_back(v, 0.);
   const double unit = std::sqrt(m.area);
-  const double far_from_axis = 0.1 * unit, near_itself = 0.03 * unit;
+  const double far_from_curve = 0.1 * unit, near_itself = 0.03 * unit;
   Edge_dijkstra dijkstra(m);
-  dijkstra.run(axis);
-  std::vector<double> to_axis(n);
-  for(std::size_t v = 0; v < n; ++v) to_axis[v] = dijkstra.distance(v);
   std::size_t far = 0, fixed = 0;
-  for(std::size_t v = 0; v < n; ++v)
+  for(std::size_t v = 0; v < m.number_of_vertices; ++v)
   {
-    if(image[v] < 0 || !(to_axis[v] > far_from_axis)) continue;
+    if(image[v] < 0 || !(to_curve[v] > far_from_curve)) continue;
     ++far;
     const std::size_t p = std::size_t(image[v]);
     if(p == v) { ++fixed; continue; }
@@ -347,8 +354,9 @@ bool refine_free_or_held(const Curves_mesh& m, const Spectral_refinement& refine
       held_image[verts[i]] = static_cast<long long>(held[i]);
     }
   const Map_distortion distortion(m, mapped, std::vector<long long>(m.number_of_vertices, 0));
+  const std::vector<double> to_curve = distances_to_curve(m, curve_vertices);
   auto defect = [&](const std::vector<long long>& image) {
-    return map_defect(fixed_point_share(m, curve_vertices, image), distortion(image));
+    return map_defect(fixed_point_share(m, to_curve, image), distortion(image));
   };
   if(!(defect(held_image) < defect(free_image))) return false;
   best.swap(held);

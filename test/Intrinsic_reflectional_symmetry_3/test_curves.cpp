@@ -1472,6 +1472,27 @@ TEST(Curves, SpectralRefinementWithSidesMendsHandsMappedToThemselves)
   EXPECT_GT(with, without);
 }
 
+namespace {
+
+// The reflection of the points `pts` across the plane through the z axis at
+// `angle` from x = 0, as the index of the nearest point to each image
+std::vector<std::size_t> turned_reflection(const std::vector<Point>& pts, double angle)
+{
+  const double nx = std::cos(angle), ny = std::sin(angle); // plane normal
+  std::vector<std::size_t> map(pts.size());
+  for(std::size_t v = 0; v < pts.size(); ++v)
+  {
+    const double d = 2. * (nx * pts[v].x() + ny * pts[v].y());
+    const Point q(pts[v].x() - d * nx, pts[v].y() - d * ny, pts[v].z());
+    double nearest = std::numeric_limits<double>::infinity();
+    for(std::size_t u = 0; u < pts.size(); ++u)
+      if(CGAL::squared_distance(q, pts[u]) < nearest) { nearest = CGAL::squared_distance(q, pts[u]); map[v] = u; }
+  }
+  return map;
+}
+
+} // namespace
+
 TEST(Curves, SpectralRefinementHoldingTheAxisTurnsAReflectionOntoIt)
 {
   // a snowman is a surface of revolution: the reflection across any plane
@@ -1485,17 +1506,7 @@ TEST(Curves, SpectralRefinementHoldingTheAxisTurnsAReflectionOntoIt)
   const IRS::Known_symmetry& s = shape.symmetries[0];
   ASSERT_EQ(s.name, "x=0 plane");
   const Whole_shape_region r(shape, 400);
-  const double angle = std::acos(-1.) / 9., nx = std::cos(angle), ny = std::sin(angle); // plane normal
-  std::vector<std::size_t> best(r.verts.size());
-  for(std::size_t v = 0; v < r.verts.size(); ++v)
-  {
-    const Point& p = r.pts[v];
-    const double d = 2. * (nx * p.x() + ny * p.y());
-    const Point q(p.x() - d * nx, p.y() - d * ny, p.z());
-    double nearest = std::numeric_limits<double>::infinity();
-    for(std::size_t u = 0; u < r.pts.size(); ++u)
-      if(CGAL::squared_distance(q, r.pts[u]) < nearest) { nearest = CGAL::squared_distance(q, r.pts[u]); best[v] = u; }
-  }
+  const std::vector<std::size_t> best = turned_reflection(r.pts, std::acos(-1.) / 9.);
   const double before = r.share(best), free_map = r.share(r.refined(best)),
                held = r.share(r.refined(best, nullptr, &s.axis));
   std::cout << "[ spectral refinement ] snowman, the 20 degree plane's reflection: " << 100. * before << " % -> "
@@ -1513,19 +1524,6 @@ TEST(Curves, TheMapHoldsItsCurveWhereThatLowersItsDefect)
   // and its true axis takes the held map; the ellipsoid given its x=0 mirror
   // map (one patch wrong) and the axis of another symmetry, y=0, keeps the
   // free map, which the held one would pull off
-  auto turned_reflection = [](const std::vector<Point>& pts, double angle) {
-    const double nx = std::cos(angle), ny = std::sin(angle); // plane normal
-    std::vector<std::size_t> map(pts.size());
-    for(std::size_t v = 0; v < pts.size(); ++v)
-    {
-      const double d = 2. * (nx * pts[v].x() + ny * pts[v].y());
-      const Point q(pts[v].x() - d * nx, pts[v].y() - d * ny, pts[v].z());
-      double nearest = std::numeric_limits<double>::infinity();
-      for(std::size_t u = 0; u < pts.size(); ++u)
-        if(CGAL::squared_distance(q, pts[u]) < nearest) { nearest = CGAL::squared_distance(q, pts[u]); map[v] = u; }
-    }
-    return map;
-  };
   auto choose = [](const Whole_shape_region& r, std::vector<std::size_t>& map, const std::vector<std::size_t>& axis) {
     const IRS::internal::Spectral_refinement refinement(r.m, r.samples, r.verts, r.in_region, 150);
     std::vector<std::size_t> sequential = map;

@@ -1401,7 +1401,8 @@ TEST(Curves, BestOfTriesStopsAtAGoodMapAndKeepsTheLeastDefect)
 
   // every try suspect: the guided run is asked once, with the map kept, and
   // replaces it where keeps_guided_run(): a lower defect, or no part held in
-  // place and a distortion a posed shape's right map reaches
+  // place, a distortion a posed shape's right map reaches and a defect at
+  // most guided_run_max_excess_defect above the kept map's
   int guided_calls = 0;
   auto guided_with = [&](Run g) {
     return [&guided_calls, g](const Run& kept, Run& out) {
@@ -1419,13 +1420,22 @@ TEST(Curves, BestOfTriesStopsAtAGoodMapAndKeepsTheLeastDefect)
   auto lower = IRS::internal::best_of_tries<Run>(run, 0u, 3, guided_with({9, 0.15, 0.02})); // defect 0.065
   EXPECT_EQ(lower.kept.seed, 9u);
   EXPECT_TRUE(lower.guided_kept);
-  auto posed = IRS::internal::best_of_tries<Run>(run, 0u, 3, guided_with({9, 0.02, 0.09})); // 0.096, but posed-like
+  auto posed = IRS::internal::best_of_tries<Run>(run, 0u, 3, guided_with({9, 0.02, 0.08})); // 0.086, but posed-like
   EXPECT_EQ(posed.kept.seed, 9u);
+  auto worse = IRS::internal::best_of_tries<Run>(run, 0u, 3, guided_with({9, 0.02, 0.09})); // 0.096: 0.021 above
+  EXPECT_EQ(worse.kept.seed, 1u);
+  EXPECT_TRUE(worse.guided_tried);
   auto distorted = IRS::internal::best_of_tries<Run>(run, 0u, 3, guided_with({9, 0.02, 0.11}));
   EXPECT_EQ(distorted.kept.seed, 1u);
-  EXPECT_TRUE(IRS::keeps_guided_run(0.1, IRS::guided_run_max_distortion, 0., 0.));
-  EXPECT_FALSE(IRS::keeps_guided_run(0.11, IRS::guided_run_max_distortion, 0., 0.));
-  EXPECT_FALSE(IRS::keeps_guided_run(0.1, 1.01 * IRS::guided_run_max_distortion, 0., 0.));
+  // the three bounds, each on its own: the share held in place, the
+  // distortion, the excess of defect over the kept map's
+  const double bound = IRS::guided_run_max_distortion;
+  EXPECT_TRUE(IRS::keeps_guided_run(0.1, bound, 0., bound + 0.03));
+  EXPECT_FALSE(IRS::keeps_guided_run(0.11, bound, 0., bound + 0.03));
+  EXPECT_FALSE(IRS::keeps_guided_run(0., 1.01 * bound, 0., bound));
+  EXPECT_TRUE(IRS::keeps_guided_run(0., bound, 0., bound - 0.99 * IRS::guided_run_max_excess_defect));
+  EXPECT_FALSE(IRS::keeps_guided_run(0., bound, 0., bound - 1.01 * IRS::guided_run_max_excess_defect));
+  EXPECT_TRUE(IRS::keeps_guided_run(0.5, 0., 0.6, 0.)); // a lower defect is always kept
   // not asked where a try is not suspect, nor after a cancelled try; a
   // guided run that finds no reflection (false) leaves the map kept, and a
   // cancelled one reports it

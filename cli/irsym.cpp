@@ -69,6 +69,7 @@ struct Seed_run
   std::vector<long> region, partner;
   std::size_t region_faces = 0, mapped_vertices = 0;
   double fixed_share = 0., distortion = 0.;
+  double reversing_share = 0.; // orientation_reversing_share() of the map
   bool guided = false; // voted by the pairs that the global reflection swaps
   bool whole_shape = false; // its map is that reflection, its first curve's region the whole shape
   double global_reversing_share = -1.; // orientation_reversing_share() of that reflection (guided runs)
@@ -98,7 +99,9 @@ usage: irsym MESH --out DIR [options]
                        samples of the map kept lets only the sample pairs vote that the
                        shape's global reflection swaps (global_reflection_map(), from the
                        Laplace spectrum); its map replaces the kept one if less defective, or
-                       if it holds nothing in place with a distortion of at most 0.1
+                       if it holds nothing in place with a distortion of at most 0.1, a defect
+                       at most 0.02 higher, and turns the surface over almost as much
+                       (orientation_reversing_share() at most 0.1 lower)
                        (keeps_guided_run(); results.guided). That run's map is the global
                        reflection itself, over the whole shape (one region, of its first
                        curve; results.whole_shape_reflection), where that map turns the
@@ -565,6 +568,8 @@ Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, co
       IRS::internal::follow_reflection_axis(work, r.partner, r.curves.front());
     }
   }
+  r.reversing_share = IRS::orientation_reversing_share(
+    work, boost::make_iterator_property_map(r.partner.begin(), get(boost::vertex_index, work)));
   log.stop();
   return r;
 }
@@ -645,7 +650,8 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     [&](unsigned seed) {
       Seed_run run = run_seed(opt, work, oracle, vertex_sdf, areas, seed, within_limit, log);
       tries.push(irsym::Json::object().add("seed", run.seed).add("curves", run.curves.size())
-                   .add("fixed_point_share", run.fixed_share).add("isometric_distortion", run.distortion));
+                   .add("fixed_point_share", run.fixed_share).add("isometric_distortion", run.distortion)
+                   .add("orientation_reversing_share", run.reversing_share));
       if(run.suspect() && seed + 1u < opt.seed + unsigned(opt.tries))
         std::cerr << "[irsym] the symmetric map of seed " << seed << " is suspect (" << 100. * run.fixed_share
                   << " % of the vertices far from the curves kept in place, isometric distortion " << run.distortion
@@ -676,7 +682,8 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
                    .add("global_reflection_reversing_share", guided.global_reversing_share)
                    .add("global_reflection_refined", guided.global_refined)
                    .add("curves", guided.curves.size())
-                   .add("fixed_point_share", guided.fixed_share).add("isometric_distortion", guided.distortion));
+                   .add("fixed_point_share", guided.fixed_share).add("isometric_distortion", guided.distortion)
+                   .add("orientation_reversing_share", guided.reversing_share));
       return true;
     });
   if(outcome.stopped) {
@@ -784,6 +791,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
      .add("vertices_with_partner", kept.mapped_vertices)
      .add("fixed_point_share", kept.fixed_share)
      .add("isometric_distortion", kept.distortion)
+     .add("orientation_reversing_share", kept.reversing_share)
      .add("map_suspect", map_suspect)
      .add("seed_kept", kept.seed)
      .add("guided", kept.guided)

@@ -172,6 +172,7 @@ struct Pipeline_result
   std::size_t similar_pairs = 0, voting_pairs = 0, region_faces = 0;
   double fixed_share = 0.; // fixed_point_share() of the map, not timed
   double distortion = 0.;  // isometric_distortion() of the map, not timed
+  double reversing_share = 0.; // orientation_reversing_share() of the map, not timed
   unsigned seed = 0; // of the run kept
   bool guided = false; // voted by the pairs that the global reflection swaps (irsym --tries)
   bool whole_shape = false; // its map is that reflection itself (irsym's results.whole_shape_reflection)
@@ -290,6 +291,7 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
       IRS::internal::follow_reflection_axis(m, r.partner, r.curves.front());
     }
   }
+  r.reversing_share = IRS::orientation_reversing_share(m, vertex_map_property(m, r.partner));
   r.seed = o.seed;
   return r;
 }
@@ -304,6 +306,7 @@ void log_map(const Options& o, const Mesh& m, const std::string& what, unsigned 
   map.partner = std::move(partner);
   map.fixed_share = IRS::fixed_point_share(m, curves, vertex_map_property(m, map.partner));
   map.distortion = IRS::isometric_distortion(m, vertex_map_property(m, map.partner));
+  map.reversing_share = IRS::orientation_reversing_share(m, vertex_map_property(m, map.partner));
   std::cerr << "  (" << what << ")";
   log_run(o, m, map);
 }
@@ -564,7 +567,7 @@ void log_run(const Options& o, const Mesh& m, const Pipeline_result& r)
             << evaluate(m, *runs_ground_truth, copy).cr() << " %";
   const double agreement = agreement_with_global_map(m, r);
   if(agreement >= 0.) std::cerr << ", agrees " << 100. * agreement << " %";
-  std::cerr << ", reverses " << 100. * IRS::orientation_reversing_share(m, vertex_map_property(m, r.partner)) << " %";
+  std::cerr << ", reverses " << 100. * r.reversing_share << " %";
   if(r.guided && !r.curves.empty() && logged_global_map.size() == num_vertices(m))
     std::cerr << ", first curve held " << 100. * IRS::curve_held_share(m, r.curves.front(), vertex_map_property(m, logged_global_map))
               << " %";

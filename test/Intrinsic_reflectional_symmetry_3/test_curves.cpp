@@ -1343,7 +1343,7 @@ TEST(Curves, BestOfTriesStopsAtAGoodMapAndKeepsTheLeastDefect)
 {
   // the retry rule of irsym --tries and symmetry_map_benchmark --tries, on
   // made-up runs: (fixed-point share, distortion) by seed
-  struct Run { unsigned seed = 0; double fixed_share = 0., distortion = 0.; };
+  struct Run { unsigned seed = 0; double fixed_share = 0., distortion = 0., reversing_share = 1.; };
   const std::vector<Run> by_seed = {{0, 0.48, 0.01}, {1, 0.05, 0.06}, {2, 0.20, 0.02}, {3, 0.02, 0.01},
                                     {4, 0.00, 0.045}, {5, 0.075, 0.03}};
   std::vector<unsigned> asked;
@@ -1401,8 +1401,9 @@ TEST(Curves, BestOfTriesStopsAtAGoodMapAndKeepsTheLeastDefect)
 
   // every try suspect: the guided run is asked once, with the map kept, and
   // replaces it where keeps_guided_run(): a lower defect, or no part held in
-  // place, a distortion a posed shape's right map reaches and a defect at
-  // most guided_run_max_excess_defect above the kept map's
+  // place, a distortion a posed shape's right map reaches, a defect at
+  // most guided_run_max_excess_defect above the kept map's and nearly as
+  // much of the surface turned over
   int guided_calls = 0;
   auto guided_with = [&](Run g) {
     return [&guided_calls, g](const Run& kept, Run& out) {
@@ -1427,15 +1428,20 @@ TEST(Curves, BestOfTriesStopsAtAGoodMapAndKeepsTheLeastDefect)
   EXPECT_TRUE(worse.guided_tried);
   auto distorted = IRS::internal::best_of_tries<Run>(run, 0u, 3, guided_with({9, 0.02, 0.11}));
   EXPECT_EQ(distorted.kept.seed, 1u);
-  // the three bounds, each on its own: the share held in place, the
-  // distortion, the excess of defect over the kept map's
-  const double bound = IRS::guided_run_max_distortion;
-  EXPECT_TRUE(IRS::keeps_guided_run(0.1, bound, 0., bound + 0.03));
-  EXPECT_FALSE(IRS::keeps_guided_run(0.11, bound, 0., bound + 0.03));
-  EXPECT_FALSE(IRS::keeps_guided_run(0., 1.01 * bound, 0., bound));
-  EXPECT_TRUE(IRS::keeps_guided_run(0., bound, 0., bound - 0.99 * IRS::guided_run_max_excess_defect));
-  EXPECT_FALSE(IRS::keeps_guided_run(0., bound, 0., bound - 1.01 * IRS::guided_run_max_excess_defect));
-  EXPECT_TRUE(IRS::keeps_guided_run(0.5, 0., 0.6, 0.)); // a lower defect is always kept
+  auto turns_less = IRS::internal::best_of_tries<Run>(run, 0u, 3, guided_with({9, 0.02, 0.08, 0.85}));
+  EXPECT_EQ(turns_less.kept.seed, 1u); // as posed, but it turns 0.15 less of the surface over
+  // the four bounds, each on its own: the share held in place, the
+  // distortion, the excess of defect over the kept map's, the loss of
+  // orientation-reversing share
+  const double bound = IRS::guided_run_max_distortion, loss = IRS::guided_run_max_reversing_loss;
+  EXPECT_TRUE(IRS::keeps_guided_run(0.1, bound, 1., 0., bound + 0.03, 1.));
+  EXPECT_FALSE(IRS::keeps_guided_run(0.11, bound, 1., 0., bound + 0.03, 1.));
+  EXPECT_FALSE(IRS::keeps_guided_run(0., 1.01 * bound, 1., 0., bound, 1.));
+  EXPECT_TRUE(IRS::keeps_guided_run(0., bound, 1., 0., bound - 0.99 * IRS::guided_run_max_excess_defect, 1.));
+  EXPECT_FALSE(IRS::keeps_guided_run(0., bound, 1., 0., bound - 1.01 * IRS::guided_run_max_excess_defect, 1.));
+  EXPECT_TRUE(IRS::keeps_guided_run(0., bound, 0.9 - 0.99 * loss, 0., bound, 0.9));
+  EXPECT_FALSE(IRS::keeps_guided_run(0., bound, 0.9 - 1.01 * loss, 0., bound, 0.9));
+  EXPECT_TRUE(IRS::keeps_guided_run(0.5, 0., 0., 0.6, 0., 1.)); // a lower defect is always kept
   // not asked where a try is not suspect, nor after a cancelled try; a
   // guided run that finds no reflection (false) leaves the map kept, and a
   // cancelled one reports it

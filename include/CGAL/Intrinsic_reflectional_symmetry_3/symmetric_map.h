@@ -842,17 +842,37 @@ constexpr double guided_run_max_distortion = 0.1;
 /// against the kept try's 0.042 and 98.5 %.
 constexpr double guided_run_max_excess_defect = 0.02;
 
-/// Whether a guided run (shares and distortions as in `is_suspect_symmetric_map()`)
-/// replaces the map kept from the tries, all of them suspect: where it has the
-/// lower `symmetric_map_defect()`, or where it holds no part in place (share at most
-/// `suspect_fixed_point_share`), its distortion is at most `guided_run_max_distortion`
-/// and its defect exceeds the kept map's by at most `guided_run_max_excess_defect`.
-inline bool keeps_guided_run(double guided_share, double guided_distortion, double kept_share, double kept_distortion)
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// How much less of the surface than the map kept from the tries a guided run
+/// more defective than it may turn over (`orientation_reversing_share()`)
+/// and still replace it. A reflection turns the surface over everywhere; a map
+/// that keeps the orientation over more of it is, there, no reflection. On
+/// the guided runs kept although more defective (`symmetry_map_benchmark
+/// --log-runs`: SCAPE base seeds 0-2, FAUST with 8 and 16 holes, seed 0), the
+/// guided map that turned over 0.24 less (SCAPE mesh004, 93.2 against 100 %
+/// CR), 0.20 less (FAUST tr_reg_007, 8 holes, 73.4 against 98.5 %) and
+/// 0.13 less (tr_reg_004, 16 holes, 99.0 against 99.9 %) was the worse
+/// map; at 0.08 less (tr_reg_007, 16 holes, 95.7 against 94.8 %), 0.04
+/// less (mesh060, base seed 1, 100 against 95.5 %), 0.01 less (mesh064,
+/// 100 against 59.1 %) or more (mesh036, 100 against 90.9 %), the better.
+constexpr double guided_run_max_reversing_loss = 0.1;
+
+/// Whether a guided run replaces the map kept from the tries, all of them
+/// suspect, given each map's `fixed_point_share()` (`share`),
+/// `isometric_distortion()` and `orientation_reversing_share()`
+/// (`reversing`): where it has the lower `symmetric_map_defect()`, or where
+/// it holds no part in place (share at most `suspect_fixed_point_share`), its
+/// distortion is at most `guided_run_max_distortion`, its defect exceeds the
+/// kept map's by at most `guided_run_max_excess_defect` and it turns over at
+/// most `guided_run_max_reversing_loss` less of the surface.
+inline bool keeps_guided_run(double guided_share, double guided_distortion, double guided_reversing,
+                             double kept_share, double kept_distortion, double kept_reversing)
 {
   const double guided = symmetric_map_defect(guided_share, guided_distortion),
                kept = symmetric_map_defect(kept_share, kept_distortion);
   return guided < kept || (guided_share <= suspect_fixed_point_share && guided_distortion <= guided_run_max_distortion &&
-                           guided <= kept + guided_run_max_excess_defect);
+                           guided <= kept + guided_run_max_excess_defect &&
+                           guided_reversing >= kept_reversing - guided_run_max_reversing_loss);
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
@@ -1130,7 +1150,8 @@ struct Tries_outcome
 /// seed 2: the try of seed 5 has defect 0.047, distortion 0.047 and CR 95.5 %,
 /// the first map that is not suspect, seed 6, defect 0.052 and CR 72.7 %).
 /// `Run` is default-constructible and movable, with the members
-/// `fixed_share` and `distortion`. A run cancelled by its callback
+/// `fixed_share`, `distortion` and `reversing_share` (`fixed_point_share()`,
+/// `isometric_distortion()`, `orientation_reversing_share()` of its map). A run cancelled by its callback
 /// (`Operation_cancelled`, a time limit) after an earlier run completed ends
 /// the loop with the best completed run (`stopped`): the time spent is not
 /// wasted. A cancelled first run, and any other exception, propagate.
@@ -1188,7 +1209,8 @@ Tries_outcome<Run> best_of_tries(RunSeed&& run, unsigned first_seed, int tries, 
     if(completed)
     {
       out.guided_tried = true;
-      if(keeps_guided_run(g.fixed_share, g.distortion, out.kept.fixed_share, out.kept.distortion))
+      if(keeps_guided_run(g.fixed_share, g.distortion, g.reversing_share, out.kept.fixed_share,
+                          out.kept.distortion, out.kept.reversing_share))
       {
         out.kept = std::move(g);
         out.guided_kept = true;

@@ -99,8 +99,8 @@ usage: irsym MESH --out DIR [options]
                        samples of the map kept lets only the sample pairs vote that the
                        shape's global reflection swaps (global_reflection_map(), from the
                        Laplace spectrum); its map replaces the kept one if less defective, or
-                       if it holds nothing in place with a distortion of at most 0.1, a defect
-                       at most 0.02 higher, and turns the surface over almost as much
+                       if it holds nothing in place with a distortion of at most 0.1 and
+                       turns the surface over almost as much
                        (orientation_reversing_share() at most 0.1 lower)
                        (keeps_guided_run(); results.guided). That run's map is the global
                        reflection itself, over the whole shape (one region, of its first

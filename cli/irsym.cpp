@@ -564,12 +564,14 @@ Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, co
       r.mapped_vertices = std::size_t(std::count_if(r.partner.begin(), r.partner.end(), [](long p) { return p >= 0; }));
       r.fixed_share = w.share;
       r.distortion = w.distortion;
+      r.reversing_share = w.reversing_share;
       r.whole_shape = true;
       IRS::internal::follow_reflection_axis(work, r.partner, r.curves.front());
     }
   }
-  r.reversing_share = IRS::orientation_reversing_share(
-    work, boost::make_iterator_property_map(r.partner.begin(), get(boost::vertex_index, work)));
+  if(!r.whole_shape)
+    r.reversing_share = IRS::orientation_reversing_share(
+      work, boost::make_iterator_property_map(r.partner.begin(), get(boost::vertex_index, work)));
   log.stop();
   return r;
 }

@@ -287,11 +287,12 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
       r.region_faces = num_faces(m);
       r.fixed_share = w.share;
       r.distortion = w.distortion;
+      r.reversing_share = w.reversing_share;
       r.whole_shape = true;
       IRS::internal::follow_reflection_axis(m, r.partner, r.curves.front());
     }
   }
-  r.reversing_share = IRS::orientation_reversing_share(m, vertex_map_property(m, r.partner));
+  if(!r.whole_shape) r.reversing_share = IRS::orientation_reversing_share(m, vertex_map_property(m, r.partner));
   r.seed = o.seed;
   return r;
 }

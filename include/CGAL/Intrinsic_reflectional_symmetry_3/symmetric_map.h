@@ -495,6 +495,27 @@ std::vector<long long> read_partners(const TriangleMesh& tm, VertexPartnerMap pa
   return image;
 }
 
+/// the vertices of all `curves`, checked against the `n` vertices of the mesh
+template <class CurveRange>
+std::vector<std::size_t> read_curve_vertices(const CurveRange& curves, std::size_t n)
+{
+  std::vector<std::size_t> curve_vertices;
+  std::size_t c = 0;
+  for(const Irsa_curve& curve : curves)
+  {
+    for(std::size_t v : curve.vertices())
+    {
+      if(v >= n)
+        throw Input_error(Input_problem::invalid_parameter,
+                          "curve " + std::to_string(c) + " has vertex index " + std::to_string(v) +
+                          " but the mesh has " + std::to_string(n) + " vertices", c);
+      curve_vertices.push_back(v);
+    }
+    ++c;
+  }
+  return curve_vertices;
+}
+
 /// the vertex indices of `samples`, checked against the `n` vertices of the mesh
 template <class SampleRange>
 std::vector<std::size_t> read_samples(const SampleRange& samples, std::size_t n)
@@ -560,22 +581,9 @@ double fixed_point_share(const TriangleMesh& tm, const CurveRange& curves, Verte
 {
   const internal::Curves_mesh m = internal::make_curves_mesh(tm, np);
   const std::size_t n = m.number_of_vertices;
-  std::vector<std::size_t> curve_vertices;
-  std::size_t c = 0;
-  for(const Irsa_curve& curve : curves)
-  {
-    for(std::size_t v : curve.vertices())
-    {
-      if(v >= n)
-        throw Input_error(Input_problem::invalid_parameter,
-                          "curve " + std::to_string(c) + " has vertex index " + std::to_string(v) +
-                          " but the mesh has " + std::to_string(n) + " vertices", c);
-      curve_vertices.push_back(v);
-    }
-    ++c;
-  }
+  const std::vector<double> to_curve = internal::distances_to_curve(m, internal::read_curve_vertices(curves, n));
   return internal::fixed_point_share(
-    m, internal::distances_to_curve(m, curve_vertices), internal::read_partners(tm, partner, CGAL::get_initialized_vertex_index_map(tm, np), n));
+    m, to_curve, internal::read_partners(tm, partner, CGAL::get_initialized_vertex_index_map(tm, np), n));
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
@@ -1312,13 +1320,21 @@ Whole_shape_reflection whole_shape_reflection(const TriangleMesh& tm, const Curv
   const auto as_map = [&tm](std::vector<Partner>& v) {
     return boost::make_iterator_property_map(v.begin(), get(boost::vertex_index, tm));
   };
+  // one mesh and one Dijkstra from the curves for both maps' fixed points
+  const Curves_mesh m = make_curves_mesh(tm, parameters::default_values());
+  const std::size_t n = m.number_of_vertices;
+  const std::vector<double> to_curve = distances_to_curve(m, read_curve_vertices(curves, n));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+  const auto share_of = [&](std::vector<Partner>& v) {
+    return fixed_point_share(m, to_curve, read_partners(tm, as_map(v), vim, n));
+  };
   Whole_shape_reflection w;
-  w.share = fixed_point_share(tm, curves, as_map(global));
+  w.share = share_of(global);
   w.distortion = isometric_distortion(tm, as_map(global));
   std::vector<Partner> refined = global;
   if(!curves.empty() && refine_symmetric_map(tm, samples, as_map(refined)))
   {
-    const double share = fixed_point_share(tm, curves, as_map(refined));
+    const double share = share_of(refined);
     const double distortion = isometric_distortion(tm, as_map(refined));
     if(symmetric_map_defect(share, distortion) < symmetric_map_defect(w.share, w.distortion))
     {
@@ -1336,10 +1352,10 @@ Whole_shape_reflection whole_shape_reflection(const TriangleMesh& tm, const Curv
 /// follows that map's axis (`reflection_axis()`), keeping its voting record
 /// (the pairs voted for the same reflection); unchanged where no axis is found.
 template <class TriangleMesh, class Partner>
-void follow_reflection_axis(const TriangleMesh& tm, std::vector<Partner>& whole, Irsa_curve& curve)
+void follow_reflection_axis(const TriangleMesh& tm, const std::vector<Partner>& whole, Irsa_curve& curve)
 {
   Irsa_curve axis =
-    reflection_axis(tm, boost::make_iterator_property_map(whole.begin(), get(boost::vertex_index, tm)));
+    reflection_axis(tm, boost::make_iterator_property_map(whole.cbegin(), get(boost::vertex_index, tm)));
   if(axis.polylines.empty()) return;
   curve.polylines = std::move(axis.polylines);
   curve.closed = std::move(axis.closed);

@@ -277,19 +277,14 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
   {
     // as irsym: the reflection itself over the whole shape where it is the
     // better map, refined over the whole mesh where that lowers its defect
-    std::vector<std::ptrdiff_t> whole = *global_map;
-    const IRS::internal::Whole_shape_reflection w = IRS::internal::whole_shape_reflection(m, r.curves, D.sources(), whole);
+    const IRS::internal::Whole_shape_reflection w = IRS::internal::prefer_whole_shape_reflection(
+      m, r.curves, D.sources(), *global_map, r.partner, r.fixed_share, r.distortion);
     r.whole_shape_refined = w.refined;
-    if(!r.curves.empty() &&
-       IRS::takes_whole_shape_reflection(w.reversing_share, w.share, w.distortion, r.fixed_share, r.distortion))
+    r.whole_shape = w.taken;
+    if(w.taken)
     {
-      r.partner = whole;
       r.region_faces = num_faces(m);
-      r.fixed_share = w.share;
-      r.distortion = w.distortion;
       r.reversing_share = w.reversing_share;
-      r.whole_shape = true;
-      IRS::internal::follow_reflection_axis(m, r.partner, r.curves.front());
     }
   }
   if(!r.whole_shape) r.reversing_share = IRS::orientation_reversing_share(m, vertex_map_property(m, r.partner));

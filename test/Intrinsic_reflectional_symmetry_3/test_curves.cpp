@@ -2118,6 +2118,127 @@ TEST(Curves, GuidedVoteFollowsTheGlobalReflection)
     IRS::Input_problem::invalid_parameter, "initial_vertex_map");
 }
 
+TEST(Curves, GuidedRunTakesTheWholeShapeReflectionWhereItIsBetter)
+{
+  // the guided run's last step (irsym and symmetry_map_benchmark) on the bent
+  // capsule: its global reflection (end to end) replaces a map that holds the
+  // whole shape in place, and the first curve, given as the axis's vertices
+  // in index order, becomes that reflection's axis as a connected polyline;
+  // the exact mirror across the bending plane, with its own axis as the
+  // curve, is better than the reflection and stays as it is. The ellipsoid's
+  // global reflection is its central inversion, an isometry that reverses
+  // orientation but fixes no curve: no reflection, never taken.
+  const auto shape = IRS::generate_bent_capsule<Mesh>(2000);
+  const Mesh& tm = shape.mesh;
+  const double e = shape.mean_edge_length;
+  const std::vector<Point> pts = vertex_points(tm);
+  const std::vector<std::size_t> samples =
+    IRS::farthest_point_samples(tm, IRS::parameters::number_of_samples(std::size_t(400)).random_seed(1u));
+  std::vector<std::ptrdiff_t> global(pts.size(), -1);
+  const auto as_map = [&tm](std::vector<std::ptrdiff_t>& v) {
+    return boost::make_iterator_property_map(v.begin(), get(boost::vertex_index, tm));
+  };
+  ASSERT_TRUE(IRS::global_reflection_map(tm, samples, as_map(global)));
+  const IRS::Known_symmetry& ends = shape.symmetries[0];
+  const IRS::Known_symmetry& bending = shape.symmetries[1];
+  ASSERT_EQ(ends.name, "end-to-end (intrinsic)");
+  ASSERT_EQ(bending.name, "z=0 plane (bending plane)");
+  const auto curve_on = [](const std::vector<std::size_t>& axis) {
+    IRS::Irsa_curve c;
+    c.polylines = {axis};
+    c.closed = {false};
+    c.support = {std::vector<double>(axis.size(), 1.)};
+    return c;
+  };
+
+  // held in place: every vertex its own partner
+  std::vector<IRS::Irsa_curve> curves = {curve_on(ends.axis)};
+  std::vector<std::ptrdiff_t> partner(pts.size());
+  std::iota(partner.begin(), partner.end(), std::ptrdiff_t(0));
+  double share = IRS::fixed_point_share(tm, curves, as_map(partner));
+  double distortion = IRS::isometric_distortion(tm, as_map(partner));
+  std::vector<std::ptrdiff_t> expected = global;
+  const IRS::internal::Whole_shape_reflection alone =
+    IRS::internal::whole_shape_reflection(tm, curves, samples, expected);
+  const IRS::internal::Whole_shape_reflection w =
+    IRS::internal::prefer_whole_shape_reflection(tm, curves, samples, global, partner, share, distortion);
+  const std::vector<int> everywhere(pts.size(), 0);
+  const double right = map_quality(pts, partner, everywhere, 0, ends, 2. * e, bent_capsule_distortion).share();
+  std::cout << "[ guided run ] bent capsule held in place: whole-shape reflection taken " << w.taken << " (fixed "
+            << 100. * w.share << " %, distortion " << w.distortion << ", reverses " << 100. * w.reversing_share
+            << " %, refined " << w.refined << "), " << 100. * right
+            << " % within 2 edges of the end-to-end mirror; first curve " << curve_to_axis(pts, curves[0], ends.axis) / e
+            << " edges from its axis" << std::endl;
+  ASSERT_TRUE(w.taken);
+  EXPECT_EQ(partner, expected); // the reflection, refined where that is better
+  EXPECT_EQ(w.refined, alone.refined);
+  EXPECT_EQ(share, w.share);
+  EXPECT_EQ(distortion, w.distortion);
+  EXPECT_GE(w.reversing_share, 0.5);
+  EXPECT_GE(right, 0.9);
+  ASSERT_EQ(curves.size(), 1u);
+  ASSERT_FALSE(curves[0].polylines.empty());
+  EXPECT_NE(curves[0].polylines, curve_on(ends.axis).polylines);
+  expect_polylines_are_connected(tm, curves[0]);
+  EXPECT_LE(curve_to_axis(pts, curves[0], ends.axis), 2. * e);
+
+  // the exact mirror across the bending plane, about its own axis
+  const IRS::Irsa_curve given = curve_on(bending.axis);
+  curves = {given};
+  partner = bending.mirror;
+  share = IRS::fixed_point_share(tm, curves, as_map(partner));
+  distortion = IRS::isometric_distortion(tm, as_map(partner));
+  const double share_before = share, distortion_before = distortion;
+  const IRS::internal::Whole_shape_reflection kept =
+    IRS::internal::prefer_whole_shape_reflection(tm, curves, samples, global, partner, share, distortion);
+  std::cout << "[ guided run ] bent capsule, the bending plane's mirror (fixed " << 100. * share << " %, distortion "
+            << distortion << ") against the reflection (fixed " << 100. * kept.share << " %, distortion "
+            << kept.distortion << "): taken " << kept.taken << std::endl;
+  EXPECT_FALSE(kept.taken);
+  EXPECT_EQ(partner, bending.mirror);
+  EXPECT_EQ(share, share_before);
+  EXPECT_EQ(distortion, distortion_before);
+  EXPECT_EQ(curves[0].polylines, given.polylines);
+
+  // no curve: nothing taken
+  std::vector<IRS::Irsa_curve> none;
+  std::iota(partner.begin(), partner.end(), std::ptrdiff_t(0));
+  EXPECT_FALSE(IRS::internal::prefer_whole_shape_reflection(tm, none, samples, global, partner, share, distortion).taken);
+  EXPECT_EQ(partner[3], 3);
+
+  const auto ellipsoid = IRS::generate_ellipsoid<Mesh>(2000);
+  const Mesh& em = ellipsoid.mesh;
+  const std::vector<Point> epts = vertex_points(em);
+  const double ee = ellipsoid.mean_edge_length;
+  const std::vector<std::size_t> esamples =
+    IRS::farthest_point_samples(em, IRS::parameters::number_of_samples(std::size_t(400)).random_seed(1u));
+  std::vector<std::ptrdiff_t> inversion(epts.size(), -1);
+  const auto eas_map = [&em](std::vector<std::ptrdiff_t>& v) {
+    return boost::make_iterator_property_map(v.begin(), get(boost::vertex_index, em));
+  };
+  ASSERT_TRUE(IRS::global_reflection_map(em, esamples, eas_map(inversion)));
+  std::size_t inverted = 0;
+  for(std::size_t v = 0; v < epts.size(); ++v)
+    inverted += distance(epts[std::size_t(inversion[v])], CGAL::ORIGIN + (CGAL::ORIGIN - epts[v])) <= 2. * ee;
+  ASSERT_GE(double(inverted), 0.9 * double(epts.size())) << "the ellipsoid's global reflection is its inversion";
+  curves = {curve_on(ellipsoid.symmetries[0].axis)};
+  const IRS::Irsa_curve x_axis = curves[0];
+  partner.assign(epts.size(), 0);
+  std::iota(partner.begin(), partner.end(), std::ptrdiff_t(0));
+  share = IRS::fixed_point_share(em, curves, eas_map(partner));
+  distortion = IRS::isometric_distortion(em, eas_map(partner));
+  const IRS::internal::Whole_shape_reflection inv =
+    IRS::internal::prefer_whole_shape_reflection(em, curves, esamples, inversion, partner, share, distortion);
+  std::cout << "[ guided run ] ellipsoid held in place, against its inversion (fixed " << 100. * inv.share
+            << " %, distortion " << inv.distortion << ", reverses " << 100. * inv.reversing_share
+            << " %): taken " << inv.taken << std::endl;
+  EXPECT_TRUE(IRS::takes_whole_shape_reflection(inv.reversing_share, inv.share, inv.distortion, share, distortion))
+    << "refused for want of an axis alone";
+  EXPECT_FALSE(inv.taken);
+  EXPECT_EQ(partner[3], 3);
+  EXPECT_EQ(curves[0].polylines, x_axis.polylines);
+}
+
 // ---------------------------------------------------------------- determinism, genericity
 
 TEST(Curves, DeterministicAndGeneric)

@@ -1314,6 +1314,7 @@ struct Whole_shape_reflection
 {
   double share = 0., distortion = 0., reversing_share = 0.;
   bool refined = false;
+  bool taken = false; // set by prefer_whole_shape_reflection()
 };
 
 template <class TriangleMesh, class CurveRange, class SampleRange, class Partner>
@@ -1351,18 +1352,38 @@ Whole_shape_reflection whole_shape_reflection(const TriangleMesh& tm, const Curv
   return w;
 }
 
-/// Where the guided run takes the whole-shape map `whole`: its first curve
-/// follows that map's axis (`reflection_axis()`), keeping its voting record
-/// (the pairs voted for the same reflection); unchanged where no axis is found.
+/// The guided run's last step, shared by irsym and symmetry_map_benchmark:
+/// where `takes_whole_shape_reflection()` prefers the whole-shape reflection
+/// (`whole_shape_reflection()` of `global`) to the map of the run's regions,
+/// `partner` with its `fixed_share` and `distortion`, and that reflection has
+/// an axis (`reflection_axis()`), `partner` becomes the reflection,
+/// `fixed_share` and `distortion` become its own, and the first curve follows
+/// its axis, keeping its voting record (the pairs voted for the same
+/// reflection). The result tells whether it was `taken`.
 template <class TriangleMesh, class Partner>
-void follow_reflection_axis(const TriangleMesh& tm, const std::vector<Partner>& whole, Irsa_curve& curve)
+Whole_shape_reflection prefer_whole_shape_reflection(const TriangleMesh& tm, std::vector<Irsa_curve>& curves,
+                                                     const std::vector<std::size_t>& samples,
+                                                     std::vector<Partner> global, std::vector<Partner>& partner,
+                                                     double& fixed_share, double& distortion)
 {
+  Whole_shape_reflection w = whole_shape_reflection(tm, curves, samples, global);
+  if(curves.empty() ||
+     !takes_whole_shape_reflection(w.reversing_share, w.share, w.distortion, fixed_share, distortion))
+    return w;
+  // a reflection fixes its axis: an isometry that reverses orientation and
+  // fixes no curve (the central inversion of an ellipsoid) is none
   Irsa_curve axis =
-    reflection_axis(tm, boost::make_iterator_property_map(whole.cbegin(), get(boost::vertex_index, tm)));
-  if(axis.polylines.empty()) return;
-  curve.polylines = std::move(axis.polylines);
-  curve.closed = std::move(axis.closed);
-  curve.support = std::move(axis.support);
+    reflection_axis(tm, boost::make_iterator_property_map(global.cbegin(), get(boost::vertex_index, tm)));
+  if(axis.polylines.empty()) return w;
+  w.taken = true;
+  partner.swap(global);
+  fixed_share = w.share;
+  distortion = w.distortion;
+  Irsa_curve& first = curves.front();
+  first.polylines = std::move(axis.polylines);
+  first.closed = std::move(axis.closed);
+  first.support = std::move(axis.support);
+  return w;
 }
 
 } // namespace internal

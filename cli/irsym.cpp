@@ -172,6 +172,11 @@ outputs in DIR:
   regions.txt          the symmetric region (curve index) of each input face, -1 for none
   symmetric_map.txt    the mirror partner of each input vertex, -1 for none
   curves.ply           input mesh coloured by region, curves in black
+  symmetric_map.ply    input mesh coloured so that mirror partners share a colour (the
+                       position averaged over each vertex and its partner, as a rainbow
+                       along its widest span; the same for both where the map is an
+                       involution): a right map gives a mirror-symmetric picture;
+                       vertices without a partner dark grey
   segmentation.txt     symmetry-aware segmentation: one segment id per input face
   segmentation.ply     input mesh, faces coloured by segment
   repaired.ply         with --repair, if the repair succeeded: the repaired mesh (closed,
@@ -344,11 +349,22 @@ void write_symmetry_outputs(const Mesh& input, const Prepared& prepared, const s
   {
     std::ofstream s(out / "regions.txt");
     for(long r : region_in) s << r << '\n';
+  }
+  const std::vector<std::ptrdiff_t> partner_in = IRS::transfer_vertex_map_to_input(prepared, partner);
+  {
     std::ofstream m(out / "symmetric_map.txt");
-    for(std::ptrdiff_t p : IRS::transfer_vertex_map_to_input(prepared, partner)) m << p << '\n';
+    for(std::ptrdiff_t p : partner_in) m << p << '\n';
   }
   for(const char* f : {"curves.txt", "curves.polylines.txt", "regions.txt", "symmetric_map.txt"})
     files.push(irsym::Json::object().add("file", f));
+  {
+    const std::string ply = (out / "symmetric_map.ply").string();
+    if(!irsym::write_coloured_ply(input, irsym::partner_colours(input, partner_in), ply))
+      throw std::runtime_error("cannot write " + ply);
+    files.push(irsym::Json::object().add("file", "symmetric_map.ply"));
+    if(irsym::render_png(ply, (out / "symmetric_map.png").string(), up))
+      files.push(irsym::Json::object().add("file", "symmetric_map.png"));
+  }
 
   // picture: vertices take the region of an incident face; the curves and
   // their one-ring in black, so that they show at any resolution

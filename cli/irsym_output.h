@@ -8,6 +8,7 @@
 #define IRSYM_OUTPUT_H
 
 #include <CGAL/IO/Color.h>
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -15,6 +16,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -210,6 +212,72 @@ inline CGAL::IO::Color label_colour(long label)
   if(label < 0) return CGAL::IO::Color(200, 200, 200);
   const auto& k = c[label % 12];
   return CGAL::IO::Color(k[0], k[1], k[2]);
+}
+
+/// Colours that show a vertex map: a colour field averaged over each vertex
+/// and its partner, so that partners share a colour (where the map is an
+/// involution; elsewhere nearly), a right mirror map gives a mirror-symmetric
+/// picture and a part mapped wrong shows as a jump of colour; vertices
+/// without a partner are dark grey. The field: the position
+/// in the bounding box, averaged over the pair, its coordinate of widest span
+/// (over the mapped vertices, 2nd to 98th percentile) as the hue of a rainbow and the next as the
+/// brightness (the mean flattens the coordinate across the mirror).
+template <typename Point>
+std::vector<CGAL::IO::Color> partner_colours(const CGAL::Surface_mesh<Point>& mesh,
+                                             const std::vector<std::ptrdiff_t>& partner)
+{
+  using Vertex = typename CGAL::Surface_mesh<Point>::Vertex_index;
+  using Size = typename CGAL::Surface_mesh<Point>::size_type;
+  const std::size_t n = mesh.number_of_vertices();
+  const auto box = CGAL::bbox_3(mesh.points().begin(), mesh.points().end());
+  const auto field = [&](std::size_t v, int axis) {
+    const double extent = box.max(axis) - box.min(axis);
+    return extent > 0. ? (CGAL::to_double(mesh.point(Vertex(Size(v)))[axis]) - box.min(axis)) / extent : 0.5;
+  };
+  std::vector<std::array<double, 3>> mean(n);
+  std::array<std::vector<double>, 3> values;
+  std::vector<char> mapped(n, 0);
+  for(std::size_t v = 0; v < n && v < partner.size(); ++v) {
+    if(partner[v] < 0 || std::size_t(partner[v]) >= n) continue;
+    mapped[v] = 1;
+    for(int axis = 0; axis < 3; ++axis) { // the pair's mean: the same whichever of the two is v
+      mean[v][axis] = 0.5 * (field(v, axis) + field(std::size_t(partner[v]), axis));
+      values[axis].push_back(mean[v][axis]);
+    }
+  }
+  // the span between the 2nd and 98th percentiles, so that a few pairs mapped
+  // far apart do not flatten the colours of all the others
+  std::array<double, 3> lo = {{0., 0., 0.}}, hi = {{1., 1., 1.}};
+  for(int axis = 0; axis < 3 && !values[axis].empty(); ++axis) {
+    std::vector<double>& x = values[axis];
+    const std::size_t a = x.size() / 50, b = x.size() - 1 - x.size() / 50;
+    std::nth_element(x.begin(), x.begin() + std::ptrdiff_t(a), x.end());
+    lo[axis] = x[a];
+    std::nth_element(x.begin(), x.begin() + std::ptrdiff_t(b), x.end());
+    hi[axis] = x[b];
+  }
+  std::array<int, 3> by_span = {{0, 1, 2}};
+  std::sort(by_span.begin(), by_span.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
+  const auto unit = [&](std::size_t v, int axis) {
+    return hi[axis] > lo[axis] ? (std::min)(1., (std::max)(0., (mean[v][axis] - lo[axis]) / (hi[axis] - lo[axis])))
+                               : 0.5;
+  };
+  std::vector<CGAL::IO::Color> colours(n, CGAL::IO::Color(70, 70, 70));
+  for(std::size_t v = 0; v < n; ++v) {
+    if(!mapped[v]) continue;
+    // hue from red (0) over yellow, green and cyan to blue (2/3 of the circle)
+    const double h = 4. * unit(v, by_span[0]), value = 0.6 + 0.4 * unit(v, by_span[1]), saturation = 0.8;
+    const int sector = (std::min)(int(h), 3);
+    const double f = h - sector, p = value * (1. - saturation), q = value * (1. - saturation * f),
+                 t = value * (1. - saturation * (1. - f));
+    const std::array<double, 3> rgb = sector == 0 ? std::array<double, 3>{{value, t, p}}
+                                    : sector == 1 ? std::array<double, 3>{{q, value, p}}
+                                    : sector == 2 ? std::array<double, 3>{{p, value, t}}
+                                                  : std::array<double, 3>{{p, q, value}};
+    const auto byte = [](double x) { return static_cast<unsigned char>(std::lround(255. * x)); };
+    colours[v] = CGAL::IO::Color(byte(rgb[0]), byte(rgb[1]), byte(rgb[2]));
+  }
+  return colours;
 }
 
 /// Writes `mesh` to `path` as binary PLY with a colour per vertex (same

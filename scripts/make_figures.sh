@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # Regenerates the figures of the user manual (doc/.../fig/) with the project's
-# own tool on generated shapes. Needs f3d and xvfb-run (installed by setup.sh).
-#   bash scripts/make_figures.sh [BUILD_DIR]
+# own tool on generated shapes, CGAL's meshes and, where SHARED_DIR holds the
+# FAUST shapes (data/faust_5k), a posed human. Needs f3d and xvfb-run
+# (installed by setup.sh).
+#   bash scripts/make_figures.sh [BUILD_DIR] [SHARED_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
+shared=${2:-}
 fig=doc/Intrinsic_reflectional_symmetry_3/fig
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -91,6 +94,18 @@ if [ -f "$tarball" ] && [ -x "$example" ]; then
   render "$tmp/segmentation/sdf_segmentation.ply" "$tmp/sdf.png" "${view[@]}"
   side_by_side "$fig/camel_segmentation.png" "$tmp/ours.png" "symmetry-aware segmentation" \
     "$tmp/sdf.png" "CGAL's SDF segmentation, same count"
+fi
+
+# The symmetric map on a posed human (FAUST tr_reg_007, whose pose breaks the
+# mirror plane): curves and regions, and the map (partners share a colour)
+faust=${shared:+$shared/data/faust_5k/faust/tr_reg_007.off}
+if [ -n "$faust" ] && [ -f "$faust" ]; then
+  "$build/cli/irsym" "$faust" --samples 1250 --seed 0 --up +Y --out "$tmp/faust"
+  view=(--up=+Y --camera-azimuth-angle=20 --scalars=RGB --comp=-2)
+  render "$tmp/faust/curves.ply" "$tmp/faust_curves.png" "${view[@]}"
+  render "$tmp/faust/symmetric_map.ply" "$tmp/faust_map.png" "${view[@]}"
+  side_by_side "$fig/faust_symmetric_map.png" "$tmp/faust_curves.png" "IRSA curve and its region" \
+    "$tmp/faust_map.png" "symmetric map: partners share a colour"
 fi
 
 ls -l "$fig"

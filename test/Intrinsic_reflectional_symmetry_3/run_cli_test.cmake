@@ -15,7 +15,8 @@ endfunction()
 # 1. the main job on a generated shape
 run(0 --shape snowman --samples 200 --seed 3 --threads 2 --out ${WORK_DIR}/snowman)
 foreach(f report.json samples.txt tau.txt transform.ply sdf.ply geodesics.ply snowman.off
-        curves.txt curves.polylines.txt regions.txt symmetric_map.txt curves.ply segmentation.txt segmentation.ply)
+        curves.txt curves.polylines.txt regions.txt symmetric_map.txt curves.ply symmetric_map.ply segmentation.txt
+        segmentation.ply)
   if(NOT EXISTS ${WORK_DIR}/snowman/${f})
     message(FATAL_ERROR "missing output ${f}")
   endif()

@@ -218,10 +218,11 @@ inline CGAL::IO::Color label_colour(long label)
 /// and its partner, so that partners share a colour (where the map is an
 /// involution; elsewhere nearly), a right mirror map gives a mirror-symmetric
 /// picture and a part mapped wrong shows as a jump of colour; vertices
-/// without a partner are dark grey. The field: the position
-/// in the bounding box, averaged over the pair, its coordinate of widest span
-/// (over the mapped vertices, 2nd to 98th percentile) as the hue of a rainbow and the next as the
-/// brightness (the mean flattens the coordinate across the mirror).
+/// without a partner are dark grey. The field: the position in the bounding
+/// box (one scale for all axes), averaged over the pair, its coordinate of
+/// widest span (over the mapped vertices, 2nd to 98th percentile) as the hue
+/// of a rainbow and the next as the brightness (the mean flattens the
+/// coordinate across the mirror).
 template <typename Point>
 std::vector<CGAL::IO::Color> partner_colours(const CGAL::Surface_mesh<Point>& mesh,
                                              const std::vector<std::ptrdiff_t>& partner)
@@ -230,8 +231,9 @@ std::vector<CGAL::IO::Color> partner_colours(const CGAL::Surface_mesh<Point>& me
   using Size = typename CGAL::Surface_mesh<Point>::size_type;
   const std::size_t n = mesh.number_of_vertices();
   const auto box = CGAL::bbox_3(mesh.points().begin(), mesh.points().end());
+  // one scale for the three axes, so that the spans compare as the shape's do
+  const double extent = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
   const auto field = [&](std::size_t v, int axis) {
-    const double extent = box.max(axis) - box.min(axis);
     return extent > 0. ? (CGAL::to_double(mesh.point(Vertex(Size(v)))[axis]) - box.min(axis)) / extent : 0.5;
   };
   std::vector<std::array<double, 3>> mean(n);

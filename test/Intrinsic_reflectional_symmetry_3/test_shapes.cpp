@@ -5,6 +5,8 @@
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
 
+#include "irsym_output.h" // the command-line tool's pictures
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
@@ -20,11 +22,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <iostream>
 #include <iterator>
 #include <limits>
+#include <numeric>
 #include <queue>
 #include <string>
 #include <vector>
@@ -461,4 +465,47 @@ TEST(ShapesArguments, BadArgumentsThrow)
   const auto g = IRS::generate_bent_capsule<SM>(100);
   EXPECT_TRUE(CGAL::is_closed(g.mesh));
   EXPECT_FALSE(PMP::does_self_intersect(g.mesh));
+}
+
+// irsym's picture of a symmetric map (symmetric_map.ply, cli/irsym_output.h):
+// on the ellipsoid, its x=0 mirror map gives partners one colour and a
+// colour field that still varies; the identity, no mirror map, colours the
+// two sides differently; vertices without a partner are dark grey
+TEST(MapPicture, PartnersShareAColour)
+{
+  typedef CGAL::Surface_mesh<Point> SM;
+  const auto shape = IRS::generate_ellipsoid<SM>(1000);
+  const IRS::Known_symmetry& s = shape.symmetries[0];
+  ASSERT_EQ(s.name, "x=0 plane");
+  const std::vector<Point> pts = vertex_points(shape.mesh);
+  std::vector<std::ptrdiff_t> partner = s.mirror;
+  const std::size_t unmapped = 0;
+  const std::size_t mirror_of_unmapped = std::size_t(partner[unmapped]);
+  partner[unmapped] = -1;
+  const std::vector<CGAL::IO::Color> colours = irsym::partner_colours(shape.mesh, partner);
+  ASSERT_EQ(colours.size(), pts.size());
+  EXPECT_EQ(colours[unmapped], CGAL::IO::Color(70, 70, 70));
+  std::size_t pairs = 0, same = 0;
+  std::vector<std::array<unsigned char, 3>> distinct;
+  for(std::size_t v = 0; v < pts.size(); ++v) {
+    if(partner[v] < 0 || v == mirror_of_unmapped) continue; // that one's partner is unmapped: no involution
+    ++pairs;
+    same += colours[v] == colours[std::size_t(partner[v])];
+    distinct.push_back({{colours[v].red(), colours[v].green(), colours[v].blue()}});
+  }
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  EXPECT_EQ(same, pairs);
+  EXPECT_GE(distinct.size(), 100u) << "the colour field varies";
+
+  std::vector<std::ptrdiff_t> identity(pts.size());
+  std::iota(identity.begin(), identity.end(), std::ptrdiff_t(0));
+  const std::vector<CGAL::IO::Color> own = irsym::partner_colours(shape.mesh, identity);
+  std::size_t off_plane = 0, differ = 0;
+  for(std::size_t v = 0; v < pts.size(); ++v)
+    if(std::abs(pts[v].x()) > 0.5) {
+      ++off_plane;
+      differ += own[v] != own[std::size_t(s.mirror[v])];
+    }
+  EXPECT_GE(double(differ), 0.95 * double(off_plane));
 }

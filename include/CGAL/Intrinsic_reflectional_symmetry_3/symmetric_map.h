@@ -1117,7 +1117,9 @@ constexpr double whole_shape_min_reversing_share = internal::reflection_min_reve
 /// (`curve_held_share()`): mesh044's guided curve strays from the axis and is
 /// held at 45 %, while the reflection maps 86 % of the ground truth right.
 /// `irsym` first refines the reflection over the whole mesh
-/// (`refine_symmetric_map()`) where that lowers its `symmetric_map_defect()`.
+/// (`refine_symmetric_map()`) where that lowers its `symmetric_map_defect()`,
+/// and takes it only where it also has an axis (`reflection_axis()`): the
+/// central inversion of an ellipsoid passes this test but fixes no curve.
 inline bool takes_whole_shape_reflection(double reversing_share, double global_share, double global_distortion,
                                          double share, double distortion)
 {

@@ -265,20 +265,8 @@ std::vector<CGAL::IO::Color> partner_colours(const CGAL::Surface_mesh<Point>& me
                                : 0.5;
   };
   std::vector<CGAL::IO::Color> colours(n, CGAL::IO::Color(70, 70, 70));
-  for(std::size_t v = 0; v < n; ++v) {
-    if(!mapped[v]) continue;
-    // hue from red (0) over yellow, green and cyan to blue (2/3 of the circle)
-    const double h = 4. * unit(v, by_span[0]), value = 0.6 + 0.4 * unit(v, by_span[1]), saturation = 0.8;
-    const int sector = (std::min)(int(h), 3);
-    const double f = h - sector, p = value * (1. - saturation), q = value * (1. - saturation * f),
-                 t = value * (1. - saturation * (1. - f));
-    const std::array<double, 3> rgb = sector == 0 ? std::array<double, 3>{{value, t, p}}
-                                    : sector == 1 ? std::array<double, 3>{{q, value, p}}
-                                    : sector == 2 ? std::array<double, 3>{{p, value, t}}
-                                                  : std::array<double, 3>{{p, q, value}};
-    const auto byte = [](double x) { return static_cast<unsigned char>(std::lround(255. * x)); };
-    colours[v] = CGAL::IO::Color(byte(rgb[0]), byte(rgb[1]), byte(rgb[2]));
-  }
+  for(std::size_t v = 0; v < n; ++v) // hue from red (0) over yellow, green and cyan to blue (240 degrees)
+    if(mapped[v]) colours[v].set_hsv(240. * unit(v, by_span[0]), 80., 60. + 40. * unit(v, by_span[1]));
   return colours;
 }
 

@@ -357,14 +357,9 @@ void write_symmetry_outputs(const Mesh& input, const Prepared& prepared, const s
   }
   for(const char* f : {"curves.txt", "curves.polylines.txt", "regions.txt", "symmetric_map.txt"})
     files.push(irsym::Json::object().add("file", f));
-  {
-    const std::string ply = (out / "symmetric_map.ply").string();
-    if(!irsym::write_coloured_ply(input, irsym::partner_colours(input, partner_in), ply))
-      throw std::runtime_error("cannot write " + ply);
-    files.push(irsym::Json::object().add("file", "symmetric_map.ply"));
-    if(irsym::render_png(ply, (out / "symmetric_map.png").string(), up))
-      files.push(irsym::Json::object().add("file", "symmetric_map.png"));
-  }
+  irsym::write_picture(out, "symmetric_map", [&](const std::string& ply) {
+    return irsym::write_coloured_ply(input, irsym::partner_colours(input, partner_in), ply);
+  }, files, up);
 
   // picture: vertices take the region of an incident face; the curves and
   // their one-ring in black, so that they show at any resolution
@@ -380,11 +375,9 @@ void write_symmetry_outputs(const Mesh& input, const Prepared& prepared, const s
         colour[i] = CGAL::IO::Color(0, 0, 0);
         for(auto u : CGAL::vertices_around_target(halfedge(v, input), input)) colour[u.idx()] = CGAL::IO::Color(0, 0, 0);
       }
-  const std::string ply = (out / "curves.ply").string();
-  if(!irsym::write_coloured_ply(input, colour, ply)) throw std::runtime_error("cannot write " + ply);
-  files.push(irsym::Json::object().add("file", "curves.ply"));
-  if(irsym::render_png(ply, (out / "curves.png").string(), up))
-    files.push(irsym::Json::object().add("file", "curves.png"));
+  irsym::write_picture(out, "curves", [&](const std::string& ply) {
+    return irsym::write_coloured_ply(input, colour, ply);
+  }, files, up);
 }
 
 /// Part repair (--repair) on the working mesh with the pipeline's distance
@@ -449,11 +442,9 @@ irsym::Json repair_outputs(const Mesh& work, const IRS::Geodesic_distance_matrix
     j.add("error", "the repaired mesh failed the checks; repaired.ply not written");
     return j;
   }
-  const std::string ply = (out / "repaired.ply").string();
-  if(!irsym::write_coloured_ply(repaired, colour, ply)) throw std::runtime_error("cannot write " + ply);
-  files.push(irsym::Json::object().add("file", "repaired.ply"));
-  if(irsym::render_png(ply, (out / "repaired.png").string(), up))
-    files.push(irsym::Json::object().add("file", "repaired.png"));
+  irsym::write_picture(out, "repaired", [&](const std::string& ply) {
+    return irsym::write_coloured_ply(repaired, colour, ply);
+  }, files, up);
   return j;
 }
 
@@ -746,12 +737,9 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   const std::vector<double> geo_in = IRS::transfer_vertex_field_to_input(prepared, first_row);
   irsym::Json files = irsym::Json::array();
   auto emit = [&](const std::vector<double>& field, const std::string& name) {
-    const std::string ply = (out / (name + ".ply")).string();
-    if(!irsym::write_scalar_ply(input, field, name, ply))
-      throw std::runtime_error("cannot write " + ply);
-    files.push(irsym::Json::object().add("file", name + ".ply"));
-    if(irsym::render_png(ply, (out / (name + ".png")).string(), opt.up))
-      files.push(irsym::Json::object().add("file", name + ".png"));
+    irsym::write_picture(out, name, [&](const std::string& ply) {
+      return irsym::write_scalar_ply(input, field, name, ply);
+    }, files, opt.up);
   };
   const std::vector<double> tau_in = IRS::transfer_vertex_field_to_input(prepared, tau);
   {
@@ -768,11 +756,10 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
       t << segment_in[f] << '\n';
       colour[f] = irsym::label_colour(segment_in[f]);
     }
-    const std::string ply = (out / "segmentation.ply").string();
-    if(!irsym::write_face_coloured_ply(input, colour, ply)) throw std::runtime_error("cannot write " + ply);
-    files.push(irsym::Json::object().add("file", "segmentation.txt")).push(irsym::Json::object().add("file", "segmentation.ply"));
-    if(irsym::render_png(ply, (out / "segmentation.png").string(), opt.up, true))
-      files.push(irsym::Json::object().add("file", "segmentation.png"));
+    files.push(irsym::Json::object().add("file", "segmentation.txt"));
+    irsym::write_picture(out, "segmentation", [&](const std::string& ply) {
+      return irsym::write_face_coloured_ply(input, colour, ply);
+    }, files, opt.up, true);
   }
   std::optional<irsym::Json> repair;
   if(opt.repair) {

@@ -20,9 +20,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -341,6 +343,20 @@ inline bool render_png(const std::string& ply, const std::string& png, const std
                           " --camera-azimuth-angle=30 --camera-elevation-angle=15 "
                           "--output='" + png + "' '" + ply + "' > /dev/null 2>&1";
   return std::system(cmd.c_str()) == 0;
+}
+
+/// A picture of the outputs: `write(path)` writes DIR/NAME.ply (false on
+/// failure, which throws, naming the file); then NAME.png is rendered where
+/// f3d is installed. Both are listed in `files` (report.json) as they appear.
+template <typename WritePly>
+void write_picture(const std::filesystem::path& dir, const std::string& name, WritePly&& write, Json& files,
+                   const std::string& up, bool face_colours = false)
+{
+  const std::string ply = (dir / (name + ".ply")).string();
+  if(!write(ply)) throw std::runtime_error("cannot write " + ply);
+  files.push(Json::object().add("file", name + ".ply"));
+  if(render_png(ply, (dir / (name + ".png")).string(), up, face_colours))
+    files.push(Json::object().add("file", name + ".png"));
 }
 
 } // namespace irsym

@@ -6,7 +6,9 @@
 // (farthest-point samples, heat-method geodesics, SDF signatures and the
 // similarity filter, IRSA voting, curve extraction, symmetric regions and
 // map) on FAUST (19 shapes, dense ground truth) and on the SCAPE meshes of
-// the Kim et al. benchmark (sparse ground truth), evaluated by the protocol
+// the Kim et al. benchmark (sparse ground truth), and with --psb on the
+// models of the Princeton Segmentation Benchmark that Kim et al.'s "Watertight"
+// set gives symmetric feature points (not humans only), evaluated by the protocol
 // of Kim, Lipman, Chen, Funkhouser (SGP 2010): for every ground-truth mirror
 // pair (x, y), both ways, e = d(map(x), y) / sqrt(area), geodesic distances
 // along the mesh edges (Dijkstra; as ../shared/tools/eval_symmetry.py does);
@@ -45,10 +47,11 @@
 //
 // usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--similarity EPS_SIM] [--distance EPS_DIS]
 //                               [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--log-runs] [--write DIR]
-//                               [--threads T] [--noise LEVEL] [--holes H] [--fill-holes] [--no-scape] [--no-faust]
+//                               [--threads T] [--noise LEVEL] [--holes H] [--fill-holes] [--no-scape] [--no-faust] [--psb]
 //   DATA_DIR  default ../shared/data (relative to the current directory);
-//             faust_5k/ and kim_bim_benchmark/ inside it, each skipped if absent
-//   N         samples per shape (default 1000)
+//             faust_5k/, kim_bim_benchmark/ and (--psb) psb/ inside it, each skipped if absent
+//   N         samples per shape (default 1000; 0: the package's default,
+//             min(3000, ceil(V / 4)), as irsym)
 //   NAME      only the shapes whose name contains NAME
 //   EPS_SIM, EPS_DIS  the similarity and distance thresholds of the signatures and the voting
 //             (default: the package's, 0.025 and 0.02)
@@ -86,6 +89,11 @@
 //             would pinch a vertex or cut off a part); the ground truth
 //             follows the vertices, and the checks of removed vertices are
 //             dropped (column checks)
+//   --psb     also the PSB models (psb/off/ID.off) with Kim et al.'s feature points
+//             (psb/sym_gt/): one row per model, named CATEGORY_ID (human_001), and the mean CR
+//             per category; the classes with rotational orbits (octopus, table) and
+//             without ground truth (vase) are skipped, and so is a model that
+//             check_input() refuses (bearing_351, degenerate faces)
 //   --log-runs  one line per run (each try, and the guided run) on stderr:
 //             seed, fixed%, dist, defect and CR%, to study the retry rule
 //   --fill-holes  the pipeline runs on prepare_mesh(fill_holes(true)) of the
@@ -155,7 +163,7 @@ struct Options
   int tries = 1; // --tries: runs with seeds seed, seed + 1, ... while the map is suspect
   std::string only, write;
   int threads = 0;
-  bool faust = true, scape = true;
+  bool faust = true, scape = true, psb = false;
   double noise = 0.;     // --noise: mean displacement, in mean edge lengths
   std::size_t holes = 0; // --holes: small holes cut (3 % of the faces)
   bool fill_holes = false; // --fill-holes: the pipeline runs on the filled mesh
@@ -212,19 +220,21 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
                                   const std::vector<double>& vertex_areas, const Pipeline_result* guided_by = nullptr,
                                   const std::vector<std::ptrdiff_t>* global_map = nullptr)
 {
-  const std::size_t number_of_samples = o.samples;
   const double similarity = o.similarity;
   Pipeline_result r;
   CGAL::Real_timer total, t;
   total.start();
   t.start();
-  const std::size_t ns = (std::min)(number_of_samples, std::size_t(num_vertices(m)));
   const bool guided = guided_by != nullptr && global_map != nullptr;
   if(guided) r.D = guided_by->D;
   else
   {
+    // --samples 0: the package's default number, min(3000, ceil(V / 4))
     const std::vector<std::size_t> samples =
-      IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(ns).random_seed(o.seed));
+      o.samples == 0 ? IRS::farthest_point_samples(m, IRS::parameters::random_seed(o.seed))
+                     : IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(
+                                                        (std::min)(o.samples, std::size_t(num_vertices(m))))
+                                                        .random_seed(o.seed));
     const IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
     r.D = IRS::compute_geodesic_distance_matrix(oracle, samples);
   }
@@ -616,7 +626,7 @@ void write_mesh_and_ground_truth(const Options& o, const std::string& name, cons
 
 void print_header()
 {
-  std::cout << std::left << std::setw(12) << "shape" << std::right << std::setw(7) << "V" << std::setw(8) << "samples"
+  std::cout << std::left << std::setw(14) << "shape" << std::right << std::setw(7) << "V" << std::setw(8) << "samples"
             << std::setw(7) << "curves" << std::setw(9) << "cover%" << std::setw(8) << "CR%" << std::setw(8) << "CR0%" << std::setw(8) << "e<=.25"
             << std::setw(9) << "mean e" << std::setw(10) << "axis mean" << std::setw(9) << "axis max"
             << std::setw(8) << "geod s" << std::setw(7) << "sig s" << std::setw(8) << "vote s" << std::setw(8)
@@ -625,9 +635,10 @@ void print_header()
             << std::setw(6) << "runs" << std::setw(8) << "checks" << '\n';
 }
 
-void print_row(const std::string& name, const Mesh& m, std::size_t samples, const Pipeline_result& r, const Metrics& e)
+void print_row(const std::string& name, const Mesh& m, const Pipeline_result& r, const Metrics& e)
 {
-  std::cout << std::left << std::setw(12) << name << std::right << std::setw(7) << num_vertices(m) << std::setw(8)
+  const std::size_t samples = r.D.number_of_sources();
+  std::cout << std::left << std::setw(14) << name << std::right << std::setw(7) << num_vertices(m) << std::setw(8)
             << samples << std::setw(7) << r.curves.size() << std::fixed << std::setprecision(2) << std::setw(9)
             << e.coverage() << std::setw(8) << e.cr() << std::setw(8) << e.cr_without_spectral() << std::setw(8) << e.le025() << std::setprecision(4)
             << std::setw(9) << e.mean_error() << std::setw(10) << e.axis_mean << std::setw(9) << e.axis_max
@@ -771,7 +782,7 @@ Faust_means run_faust(const Options& o)
     if(!perturb_and_run(o, name, m, gt, r)) continue;
     runs_ground_truth = nullptr;
     const Metrics e = evaluate(m, gt, r);
-    print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
+    print_row(name, m, r, e);
     write_outputs(o, name, r);
     if(o.perturbed()) write_mesh_and_ground_truth(o, name, m, gt);
     all.add(e, r);
@@ -886,13 +897,106 @@ void run_scape(const Options& o)
     if(!perturb_and_run(o, name, m, gt, r)) continue;
     runs_ground_truth = nullptr;
     const Metrics e = evaluate(m, gt, r);
-    print_row(name, m, (std::min)(o.samples, std::size_t(num_vertices(m))), r, e);
+    print_row(name, m, r, e);
     write_outputs(o, name, r);
     write_mesh_and_ground_truth(o, name, m, gt);
     all.add(e, r);
   }
   std::cout << '\n';
   all.print("SCAPE, all meshes");
+}
+
+// the categories of the Princeton Segmentation Benchmark, 20 models each by id
+// (Spring, ids 261-280, is the Kim et al. class 14 but no PSB category)
+const char* const psb_categories[] = {"human", "cup", "glasses", "airplane", "ant", "chair", "octopus",
+                                      "table", "teddy", "hand", "plier", "fish", "bird", "spring",
+                                      "armadillo", "bust", "mech", "bearing", "vase", "fourleg"};
+
+// --psb: the PSB models of ../shared/data/psb with the symmetric feature points
+// of Kim et al.'s "Watertight" benchmark (sym_gt/ID.vts, 0-based vertex ids, and
+// the class's mirror orbits, sym_gt/CLASS.sym.info). A class whose orbits are
+// not all pairs and axis points (octopus, table: rotational symmetries) has
+// no single reflection to check a map against, and is skipped.
+void run_psb(const Options& o)
+{
+  const fs::path dir = fs::path(o.data) / "psb";
+  if(!fs::is_directory(dir / "off") || !fs::is_directory(dir / "sym_gt"))
+  {
+    std::cout << "PSB: " << (dir / "off").string() << " or sym_gt not found, skipped\n";
+    return;
+  }
+  std::vector<int> ids;
+  for(const auto& entry : fs::directory_iterator(dir / "off"))
+    if(entry.path().extension() == ".off") ids.push_back(std::atoi(entry.path().stem().string().c_str()));
+  std::sort(ids.begin(), ids.end());
+  std::cout << "\nPSB (" << dir.string() << "): sparse ground truth of Kim et al. (sym_gt/ID.vts, CLASS.sym.info)"
+            << perturbation(o) << "\n";
+  print_header();
+  Summary all;
+  std::vector<Summary> by_category(std::size(psb_categories));
+  for(int id : ids)
+  {
+    const std::size_t category = std::size_t(id - 1) / 20;
+    if(id < 1 || category >= by_category.size()) continue;
+    std::ostringstream padded; // human_001: --only human_001 picks one model
+    padded << psb_categories[category] << '_' << std::setw(3) << std::setfill('0') << id;
+    const std::string name = padded.str();
+    if(!o.only.empty() && name.find(o.only) == std::string::npos) continue;
+    const std::vector<long> points = read_integers(dir / "sym_gt" / (std::to_string(id) + ".vts"), true);
+    const fs::path orbits_file = dir / "sym_gt" / (std::to_string(category + 1) + ".sym.info");
+    std::vector<std::pair<long, long>> orbits; // feature indices; (i, i) on the axis
+    bool reflection = true;
+    {
+      std::ifstream in(orbits_file);
+      std::string line;
+      while(std::getline(in, line))
+      {
+        std::istringstream is(line);
+        std::vector<long> f;
+        for(long v; is >> v;) f.push_back(v);
+        if(f.size() > 2) reflection = false;
+        else if(!f.empty()) orbits.emplace_back(f.front(), f.back());
+      }
+    }
+    if(points.empty() || orbits.empty())
+    {
+      std::cout << name << ": no ground truth, skipped\n";
+      continue;
+    }
+    if(!reflection)
+    {
+      std::cout << name << ": orbits of more than two points (a rotational symmetry), no mirror pairs, skipped\n";
+      continue;
+    }
+    // a model that check_input() refuses is skipped, as irsym refuses it (bearing_351:
+    // 20 degenerate faces, 18 of which repair_input() cannot remove)
+    Mesh m;
+    try { IRS::read_mesh((dir / "off" / (std::to_string(id) + ".off")).string(), m); IRS::check_input(m); }
+    catch(const IRS::Input_error& e) { std::cout << name << ": " << e.what() << ", skipped\n"; continue; }
+    std::vector<std::pair<std::size_t, std::size_t>> gt;
+    for(const auto& ij : orbits)
+    {
+      if(ij.first < 0 || ij.second < 0 || std::size_t(ij.first) >= points.size() ||
+         std::size_t(ij.second) >= points.size()) continue; // a feature this model lacks
+      const long a = points[std::size_t(ij.first)], b = points[std::size_t(ij.second)];
+      if(a >= 0 && b >= 0 && std::size_t(a) < num_vertices(m) && std::size_t(b) < num_vertices(m))
+        gt.emplace_back(std::size_t(a), std::size_t(b));
+    }
+    Pipeline_result r;
+    runs_ground_truth = &gt;
+    if(o.log_runs) std::cerr << name << '\n';
+    if(!perturb_and_run(o, name, m, gt, r)) continue;
+    runs_ground_truth = nullptr;
+    const Metrics e = evaluate(m, gt, r);
+    print_row(name, m, r, e);
+    write_outputs(o, name, r);
+    write_mesh_and_ground_truth(o, name, m, gt);
+    all.add(e, r);
+    by_category[category].add(e, r);
+  }
+  std::cout << '\n';
+  for(std::size_t c = 0; c < by_category.size(); ++c) by_category[c].print(std::string("PSB, ") + psb_categories[c]);
+  all.print("PSB, all models");
 }
 
 std::string seed_list(const std::vector<unsigned>& seeds)
@@ -914,7 +1018,7 @@ int main(int argc, char** argv)
       if(i + 1 >= argc) { std::cerr << a << " expects a value\n"; std::exit(1); }
       return argv[++i];
     };
-    if(a == "--samples") o.samples = std::size_t(std::max(1L, std::atol(value().c_str())));
+    if(a == "--samples") o.samples = std::size_t(std::max(0L, std::atol(value().c_str())));
     else if(a == "--only") o.only = value();
     else if(a == "--log-runs") o.log_runs = true;
     else if(a == "--similarity") o.similarity = std::atof(value().c_str());
@@ -937,10 +1041,11 @@ int main(int argc, char** argv)
     else if(a == "--fill-holes") o.fill_holes = true;
     else if(a == "--no-scape") o.scape = false;
     else if(a == "--no-faust") o.faust = false;
+    else if(a == "--psb") o.psb = true;
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--write DIR] "
-                   "[--threads T] [--similarity EPS_SIM] [--distance EPS_DIS] [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--log-runs] [--noise LEVEL] [--holes H] [--fill-holes] [--no-scape] [--no-faust]\n";
+                   "[--threads T] [--similarity EPS_SIM] [--distance EPS_DIS] [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--log-runs] [--noise LEVEL] [--holes H] [--fill-holes] [--no-scape] [--no-faust] [--psb]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }
@@ -951,7 +1056,8 @@ int main(int argc, char** argv)
   if(o.threads > 0)
     control = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(o.threads));
 #endif
-  std::cout << "symmetric map benchmark: data " << o.data << ", " << o.samples
+  std::cout << "symmetric map benchmark: data " << o.data << ", "
+            << (o.samples ? std::to_string(o.samples) : std::string("min(3000, V / 4)"))
             << " samples per shape (seed" << (o.seeds.size() > 1 ? "s " : " ") << seed_list(o.seeds)
             << (o.tries > 1 ? ", up to " + std::to_string(o.tries) + " runs where the map is suspect" : std::string())
             << ")" << (o.similarity >= 0. ? ", eps_SIM " + std::to_string(o.similarity) : std::string())
@@ -983,6 +1089,7 @@ int main(int argc, char** argv)
     }
     if(o.faust) faust_runs.push_back(run_faust(run));
     if(o.scape) run_scape(run);
+    if(o.psb) run_psb(run);
   }
   if(o.faust && o.seeds.size() > 1) print_faust_over_seeds(o.seeds, faust_runs);
   return 0;

@@ -743,6 +743,63 @@ std::string perturbation(const Options& o)
   return os.str();
 }
 
+// the mirror orbits of a Kim et al. ground truth (SYM_INFO: one orbit of
+// feature indices per line, a pair or a point on the axis, as (i, i));
+// `reflection` is false where an orbit has more points (a rotational symmetry)
+std::vector<std::pair<long, long>> read_mirror_orbits(const fs::path& sym_info, bool& reflection)
+{
+  std::vector<std::pair<long, long>> orbits;
+  reflection = true;
+  std::ifstream in(sym_info);
+  for(std::string line; std::getline(in, line);)
+  {
+    std::istringstream is(line);
+    std::vector<long> f;
+    for(long v; is >> v;) f.push_back(v);
+    if(f.size() > 2) reflection = false;
+    else if(!f.empty()) orbits.emplace_back(f.front(), f.back());
+  }
+  return orbits;
+}
+
+// the pairs of vertices of a sparse ground truth: feature k is the input vertex
+// points[k], which is vertex to_mesh[points[k]] of the mesh run (-1: removed);
+// an orbit naming a feature the model lacks is dropped
+std::vector<std::pair<std::size_t, std::size_t>> sparse_ground_truth(const std::vector<long>& points,
+                                                                     const std::vector<std::pair<long, long>>& orbits,
+                                                                     const std::vector<std::ptrdiff_t>& to_mesh)
+{
+  std::vector<std::pair<std::size_t, std::size_t>> gt;
+  auto vertex = [&](long feature) -> std::ptrdiff_t {
+    if(feature < 0 || std::size_t(feature) >= points.size()) return -1;
+    const long v = points[std::size_t(feature)];
+    return v >= 0 && std::size_t(v) < to_mesh.size() ? to_mesh[std::size_t(v)] : -1;
+  };
+  for(const auto& ij : orbits)
+  {
+    const std::ptrdiff_t a = vertex(ij.first), b = vertex(ij.second);
+    if(a >= 0 && b >= 0) gt.emplace_back(std::size_t(a), std::size_t(b));
+  }
+  return gt;
+}
+
+// perturb_and_run() on one shape, then its row, its outputs (and the mesh run
+// with its ground truth where `write_mesh`) and its metrics; false if skipped
+bool run_shape(const Options& o, const std::string& name, Mesh& m, std::vector<std::pair<std::size_t, std::size_t>>& gt,
+               bool write_mesh, Metrics& e, Pipeline_result& r)
+{
+  runs_ground_truth = &gt;
+  if(o.log_runs) std::cerr << name << '\n';
+  const bool ran = perturb_and_run(o, name, m, gt, r);
+  runs_ground_truth = nullptr;
+  if(!ran) return false;
+  e = evaluate(m, gt, r);
+  print_row(name, m, r, e);
+  write_outputs(o, name, r);
+  if(write_mesh) write_mesh_and_ground_truth(o, name, m, gt);
+  return true;
+}
+
 Faust_means run_faust(const Options& o)
 {
   const fs::path dir = fs::path(o.data) / "faust_5k" / "faust";
@@ -777,14 +834,8 @@ Faust_means run_faust(const Options& o)
       if(x[k] >= 1 && y[k] >= 1 && std::size_t(x[k]) <= num_vertices(m) && std::size_t(y[k]) <= num_vertices(m))
         gt.emplace_back(std::size_t(x[k] - 1), std::size_t(y[k] - 1)); // 1-based
     Pipeline_result r;
-    runs_ground_truth = &gt;
-    if(o.log_runs) std::cerr << name << '\n';
-    if(!perturb_and_run(o, name, m, gt, r)) continue;
-    runs_ground_truth = nullptr;
-    const Metrics e = evaluate(m, gt, r);
-    print_row(name, m, r, e);
-    write_outputs(o, name, r);
-    if(o.perturbed()) write_mesh_and_ground_truth(o, name, m, gt);
+    Metrics e;
+    if(!run_shape(o, name, m, gt, o.perturbed(), e, r)) continue;
     all.add(e, r);
     // tr_reg_000 .. 009: subject 0 in poses 0..9; tr_reg_010, 020, ...: pose 0 of subjects 1..9
     const int id = std::atoi(name.substr(name.size() - 3).c_str());
@@ -842,20 +893,8 @@ void run_scape(const Options& o)
   }
   // ground truth: feature points (0-based vertex ids) and their mirror orbits
   const std::vector<long> points = read_integers(dir / "corrs" / "1.pid", true);
-  std::vector<std::pair<long, long>> orbits; // feature indices; (i, i) on the axis
-  {
-    std::ifstream in(dir / "corrs" / "1.sym.info");
-    std::string line;
-    while(std::getline(in, line))
-    {
-      std::istringstream is(line);
-      std::vector<long> ids;
-      long v;
-      while(is >> v) ids.push_back(v);
-      if(ids.size() == 1) orbits.emplace_back(ids[0], ids[0]);
-      else if(ids.size() == 2) orbits.emplace_back(ids[0], ids[1]);
-    }
-  }
+  bool reflection = true;
+  const std::vector<std::pair<long, long>> orbits = read_mirror_orbits(dir / "corrs" / "1.sym.info", reflection);
   std::vector<std::string> names;
   for(const auto& entry : fs::directory_iterator(dir / "meshes"))
     if(entry.path().extension() == ".off") names.push_back(entry.path().stem().string());
@@ -881,25 +920,10 @@ void run_scape(const Options& o)
     std::vector<std::ptrdiff_t> to_mended(num_vertices(input), -1);
     for(std::size_t v = 0; v < repairs.output_to_input_vertex.size(); ++v)
       if(to_mended[repairs.output_to_input_vertex[v]] < 0) to_mended[repairs.output_to_input_vertex[v]] = std::ptrdiff_t(v);
-    std::vector<std::pair<std::size_t, std::size_t>> gt;
-    for(const auto& ij : orbits)
-    {
-      if(ij.first < 0 || ij.second < 0 || std::size_t(ij.first) >= points.size() ||
-         std::size_t(ij.second) >= points.size()) continue;
-      const long a = points[std::size_t(ij.first)], b = points[std::size_t(ij.second)];
-      if(a < 0 || b < 0 || std::size_t(a) >= to_mended.size() || std::size_t(b) >= to_mended.size()) continue;
-      if(to_mended[std::size_t(a)] < 0 || to_mended[std::size_t(b)] < 0) continue;
-      gt.emplace_back(std::size_t(to_mended[std::size_t(a)]), std::size_t(to_mended[std::size_t(b)]));
-    }
+    std::vector<std::pair<std::size_t, std::size_t>> gt = sparse_ground_truth(points, orbits, to_mended);
     Pipeline_result r;
-    runs_ground_truth = &gt;
-    if(o.log_runs) std::cerr << name << '\n';
-    if(!perturb_and_run(o, name, m, gt, r)) continue;
-    runs_ground_truth = nullptr;
-    const Metrics e = evaluate(m, gt, r);
-    print_row(name, m, r, e);
-    write_outputs(o, name, r);
-    write_mesh_and_ground_truth(o, name, m, gt);
+    Metrics e;
+    if(!run_shape(o, name, m, gt, true, e, r)) continue;
     all.add(e, r);
   }
   std::cout << '\n';
@@ -944,20 +968,8 @@ void run_psb(const Options& o)
     if(!o.only.empty() && name.find(o.only) == std::string::npos) continue;
     const std::vector<long> points = read_integers(dir / "sym_gt" / (std::to_string(id) + ".vts"), true);
     const fs::path orbits_file = dir / "sym_gt" / (std::to_string(category + 1) + ".sym.info");
-    std::vector<std::pair<long, long>> orbits; // feature indices; (i, i) on the axis
     bool reflection = true;
-    {
-      std::ifstream in(orbits_file);
-      std::string line;
-      while(std::getline(in, line))
-      {
-        std::istringstream is(line);
-        std::vector<long> f;
-        for(long v; is >> v;) f.push_back(v);
-        if(f.size() > 2) reflection = false;
-        else if(!f.empty()) orbits.emplace_back(f.front(), f.back());
-      }
-    }
+    const std::vector<std::pair<long, long>> orbits = read_mirror_orbits(orbits_file, reflection);
     if(points.empty() || orbits.empty())
     {
       std::cout << name << ": no ground truth, skipped\n";
@@ -973,24 +985,12 @@ void run_psb(const Options& o)
     Mesh m;
     try { IRS::read_mesh((dir / "off" / (std::to_string(id) + ".off")).string(), m); IRS::check_input(m); }
     catch(const IRS::Input_error& e) { std::cout << name << ": " << e.what() << ", skipped\n"; continue; }
-    std::vector<std::pair<std::size_t, std::size_t>> gt;
-    for(const auto& ij : orbits)
-    {
-      if(ij.first < 0 || ij.second < 0 || std::size_t(ij.first) >= points.size() ||
-         std::size_t(ij.second) >= points.size()) continue; // a feature this model lacks
-      const long a = points[std::size_t(ij.first)], b = points[std::size_t(ij.second)];
-      if(a >= 0 && b >= 0 && std::size_t(a) < num_vertices(m) && std::size_t(b) < num_vertices(m))
-        gt.emplace_back(std::size_t(a), std::size_t(b));
-    }
+    std::vector<std::ptrdiff_t> as_given(num_vertices(m));
+    std::iota(as_given.begin(), as_given.end(), std::ptrdiff_t(0));
+    std::vector<std::pair<std::size_t, std::size_t>> gt = sparse_ground_truth(points, orbits, as_given);
     Pipeline_result r;
-    runs_ground_truth = &gt;
-    if(o.log_runs) std::cerr << name << '\n';
-    if(!perturb_and_run(o, name, m, gt, r)) continue;
-    runs_ground_truth = nullptr;
-    const Metrics e = evaluate(m, gt, r);
-    print_row(name, m, r, e);
-    write_outputs(o, name, r);
-    write_mesh_and_ground_truth(o, name, m, gt);
+    Metrics e;
+    if(!run_shape(o, name, m, gt, true, e, r)) continue;
     all.add(e, r);
     by_category[category].add(e, r);
   }

@@ -129,11 +129,16 @@ usage: irsym MESH --out DIR [options]
   --max-hole-length L  with --fill-holes, fill only the boundary cycles at most L long (in the
                        mesh's units; the others stay open, report.json: holes_left_open),
                        for a surface with an opening by design besides its holes
+  --max-similar-pairs-per-sample K  keep at most K times the number of samples of the
+                       pairs that pass the similarity filter, drawn at random with --seed
+                       (similar_sample_pairs' maximum_similar_pairs_per_sample; default 64,
+                       'none' for the paper's filter without a cap). Where the SDF is
+                       nearly uniform (cups, bearings, tables) 100-450 pairs per sample pass
+                       and the voting, whose cost grows as their square, takes minutes
   --max-voting-pairs N at most N of the similar sample pairs vote for boundaries, drawn at
                        random with --seed (all of them still support); default: all. Where
-                       the SDF is nearly uniform (flat or machined parts) most sample pairs
-                       pass the similarity filter and the voting can take minutes; the
-                       tool then says so before voting
+                       many pairs pass the similarity filter even so, the voting can take
+                       minutes; the tool then says so before voting
   --nested-symmetries  also extract the axes of smaller parts (limbs) below the paper's
                        selection (extract_irsa_curves' nested_symmetries): more curves,
                        regions and segments
@@ -199,6 +204,7 @@ struct Options
   long long target_vertices = 0, max_voting_pairs = 0; // 0: no cap
   double time_limit = 0.; // seconds, 0: none
   double max_hole_length = std::numeric_limits<double>::infinity(); // --fill-holes bound, infinity: none
+  double max_similar_per_sample = IRS::default_maximum_similar_pairs_per_sample; // infinity: none
   bool remesh = false, repair = false, nested = false, fill_holes = false;
   std::string up = "+Z";
 };
@@ -248,6 +254,11 @@ Options parse_options(int argc, char** argv)
     else if(a == "--threads") o.threads = int(parse_integer(a, value(), 1));
     else if(a == "--target-vertices") o.target_vertices = parse_integer(a, value(), 4);
     else if(a == "--max-voting-pairs") o.max_voting_pairs = parse_integer(a, value(), 1);
+    else if(a == "--max-similar-pairs-per-sample")
+    {
+      const std::string k = value();
+      o.max_similar_per_sample = k == "none" ? std::numeric_limits<double>::infinity() : parse_positive(a, k);
+    }
     else if(a == "--time-limit") o.time_limit = parse_positive(a, value());
     else if(a == "--remesh") o.remesh = true;
     else if(a == "--fill-holes") o.fill_holes = true;
@@ -496,7 +507,8 @@ Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, co
   log.start("signatures" + suffix);
   const IRS::Sdf_signatures signatures = IRS::sdf_signatures(vertex_sdf, areas, r.D);
   std::vector<std::pair<std::size_t, std::size_t>> similar;
-  IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
+  IRS::similar_sample_pairs(signatures, std::back_inserter(similar),
+                            IRS::parameters::maximum_similar_pairs_per_sample(opt.max_similar_per_sample).random_seed(seed));
   if(guided_by != nullptr && global_map != nullptr)
   {
     std::vector<std::pair<std::size_t, std::size_t>> swapped;
@@ -511,12 +523,13 @@ Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, co
   log.start("IRSA transform (voting)" + suffix);
   // the voting's cost grows with its pairs times the similar pairs: a hint
   // where that many is unusual (PSB's table 156 at 1,000 samples: 159,402
-  // similar pairs, 22 s on two cores; typical meshes: a few thousand)
+  // similar pairs without the cap, 22 s on two cores; typical meshes: a few
+  // thousand to 60,000)
   const std::size_t many_similar_pairs = 100000;
   if(opt.max_voting_pairs == 0 && similar.size() > many_similar_pairs)
     std::cerr << "[irsym] " << similar.size() << " of " << r.samples.size() * (r.samples.size() - 1) / 2
               << " sample pairs pass the similarity filter (a nearly uniform SDF): the voting may take minutes;"
-                 " --max-voting-pairs N lets only N of them vote\n";
+                 " --max-similar-pairs-per-sample K keeps fewer of them, --max-voting-pairs N lets only N vote\n";
   r.tau.assign(num_vertices(work), 0.);
   const std::size_t cap = opt.max_voting_pairs > 0 ? std::size_t(opt.max_voting_pairs)
                                                    : std::numeric_limits<std::size_t>::max(); // the default: no cap
@@ -850,6 +863,7 @@ int main(int argc, char** argv)
           .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh).add("fill_holes", opt.fill_holes)
           .add("max_hole_length", opt.max_hole_length).add("up", opt.up)
           .add("repair", opt.repair).add("nested_symmetries", opt.nested).add("time_limit", opt.time_limit)
+          .add("max_similar_pairs_per_sample", opt.max_similar_per_sample) // null: none
           .add("max_voting_pairs", opt.max_voting_pairs > 0 ? double(opt.max_voting_pairs)
                                                             : std::numeric_limits<double>::quiet_NaN());
     report.add("parameters", params);

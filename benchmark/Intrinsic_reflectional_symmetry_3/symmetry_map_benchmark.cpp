@@ -46,7 +46,7 @@
 // apart. Diagnostics only: CR% stays the protocol's figure.
 //
 // usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--similarity EPS_SIM] [--distance EPS_DIS]
-//                               [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--log-runs] [--write DIR]
+//                               [--similar-per-sample K] [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--log-runs] [--write DIR]
 //                               [--threads T] [--noise LEVEL] [--holes H] [--fill-holes] [--no-scape] [--no-faust] [--psb]
 //   DATA_DIR  default ../shared/data (relative to the current directory);
 //             faust_5k/, kim_bim_benchmark/ and (--psb) psb/ inside it, each skipped if absent
@@ -55,6 +55,8 @@
 //   NAME      only the shapes whose name contains NAME
 //   EPS_SIM, EPS_DIS  the similarity and distance thresholds of the signatures and the voting
 //             (default: the package's, 0.025 and 0.02)
+//   K         at most K similar pairs per sample, drawn with the run's seed (default:
+//             the package's 64; inf for none)
 //   T         symmetry_tolerance of the final regions and the map (default: the
 //             package's 1.5; the extraction keeps its own 1.0), for studies of
 //             how far the regions should run on a posed shape
@@ -156,6 +158,7 @@ struct Options
   std::string data = "../shared/data";
   std::size_t samples = 1000;
   double similarity = -1.; // < 0: the package's default
+  double similar_per_sample = -1.; // < 0: the package's default
   double distance = IRS::internal::default_distance_threshold; // eps_DIS
   double region_tolerance = IRS::internal::default_region_symmetry_tolerance; // of the regions and the map
   unsigned seed = 0;
@@ -244,9 +247,12 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
 
   const IRS::Sdf_signatures signatures = IRS::sdf_signatures(vertex_sdf, vertex_areas, D);
   std::vector<std::pair<std::size_t, std::size_t>> similar;
-  if(similarity < 0.) IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
-  else IRS::similar_sample_pairs(signatures, std::back_inserter(similar),
-                                 IRS::parameters::similarity_threshold(similarity));
+  IRS::similar_sample_pairs(
+    signatures, std::back_inserter(similar),
+    IRS::parameters::similarity_threshold(similarity < 0. ? IRS::default_similarity_threshold : similarity)
+      .maximum_similar_pairs_per_sample(o.similar_per_sample < 0. ? IRS::default_maximum_similar_pairs_per_sample
+                                                                  : o.similar_per_sample)
+      .random_seed(o.seed));
   if(guided)
   {
     std::vector<std::pair<std::size_t, std::size_t>> swapped;
@@ -574,6 +580,8 @@ void log_run(const Options& o, const Mesh& m, const Pipeline_result& r)
   const double agreement = agreement_with_global_map(m, r);
   if(agreement >= 0.) std::cerr << ", agrees " << 100. * agreement << " %";
   std::cerr << ", reverses " << 100. * r.reversing_share << " %";
+  if(r.similar_pairs > 0)
+    std::cerr << ", " << r.similar_pairs << " similar pairs, " << r.voting_pairs << " voted, vote " << r.seconds[2] << " s";
   if(r.guided && !r.curves.empty() && logged_global_map.size() == num_vertices(m))
     std::cerr << ", first curve held " << 100. * IRS::curve_held_share(m, r.curves.front(), vertex_map_property(m, logged_global_map))
               << " %";
@@ -1022,6 +1030,7 @@ int main(int argc, char** argv)
     else if(a == "--only") o.only = value();
     else if(a == "--log-runs") o.log_runs = true;
     else if(a == "--similarity") o.similarity = std::atof(value().c_str());
+    else if(a == "--similar-per-sample") o.similar_per_sample = std::atof(value().c_str());
     else if(a == "--distance") o.distance = std::atof(value().c_str());
     else if(a == "--symmetry-tolerance") o.region_tolerance = std::atof(value().c_str());
     else if(a == "--seed") o.seeds = {unsigned(std::strtoul(value().c_str(), nullptr, 10))};
@@ -1045,7 +1054,7 @@ int main(int argc, char** argv)
     else if(a == "--help" || a == "-h")
     {
       std::cout << "usage: symmetry_map_benchmark [DATA_DIR] [--samples N] [--only NAME] [--write DIR] "
-                   "[--threads T] [--similarity EPS_SIM] [--distance EPS_DIS] [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--log-runs] [--noise LEVEL] [--holes H] [--fill-holes] [--no-scape] [--no-faust] [--psb]\n";
+                   "[--threads T] [--similarity EPS_SIM] [--similar-per-sample K] [--distance EPS_DIS] [--symmetry-tolerance T] [--seed S | --seeds S1,S2,...] [--tries N] [--log-runs] [--noise LEVEL] [--holes H] [--fill-holes] [--no-scape] [--no-faust] [--psb]\n";
       return 0;
     }
     else if(!a.empty() && a[0] == '-') { std::cerr << "unknown option " << a << '\n'; return 1; }
@@ -1061,6 +1070,7 @@ int main(int argc, char** argv)
             << " samples per shape (seed" << (o.seeds.size() > 1 ? "s " : " ") << seed_list(o.seeds)
             << (o.tries > 1 ? ", up to " + std::to_string(o.tries) + " runs where the map is suspect" : std::string())
             << ")" << (o.similarity >= 0. ? ", eps_SIM " + std::to_string(o.similarity) : std::string())
+            << (o.similar_per_sample >= 0. ? ", at most " + std::to_string(o.similar_per_sample) + " similar pairs per sample" : std::string())
             << (o.distance != IRS::internal::default_distance_threshold ? ", eps_DIS " + std::to_string(o.distance) : std::string())
             << (o.region_tolerance != IRS::internal::default_region_symmetry_tolerance
                   ? ", symmetry_tolerance of the regions and map " + std::to_string(o.region_tolerance)

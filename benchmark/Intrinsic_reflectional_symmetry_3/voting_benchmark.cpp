@@ -111,7 +111,11 @@ Pairs similar_pairs(const Mesh& m, const IRS::Geodesic_distance_matrix& D, const
   (void)m;
   const IRS::Sdf_signatures sig = IRS::sdf_signatures(sdf, areas, D);
   Pairs pairs;
-  IRS::similar_sample_pairs(sig, std::back_inserter(pairs), IRS::parameters::similarity_threshold(similarity_threshold));
+  // the paper's filter without the cap on similar pairs: the studies here
+  // measure the voting (and its own cap) on every pair that passes
+  IRS::similar_sample_pairs(sig, std::back_inserter(pairs),
+                            IRS::parameters::similarity_threshold(similarity_threshold)
+                              .maximum_similar_pairs_per_sample(std::numeric_limits<double>::infinity()));
   return pairs;
 }
 

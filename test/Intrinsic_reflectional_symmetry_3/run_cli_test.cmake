@@ -261,6 +261,16 @@ if(similar LESS_EQUAL 40 OR NOT voting EQUAL 40 OR NOT cap EQUAL 40)
   message(FATAL_ERROR "--max-voting-pairs 40: ${voting} voting pairs of ${similar} similar, reported cap '${cap}'")
 endif()
 
+# 2b'. --max-similar-pairs-per-sample: the most similar 0.5 x 200 pairs are kept
+run(0 ${WORK_DIR}/snowman/snowman.off --samples 200 --seed 3 --max-similar-pairs-per-sample 0.5 --out ${WORK_DIR}/fewer)
+file(READ ${WORK_DIR}/fewer/report.json fewer)
+string(JSON kept GET "${fewer}" results similar_sample_pairs)
+string(JSON per_sample GET "${fewer}" parameters max_similar_pairs_per_sample)
+if(similar LESS_EQUAL 100 OR NOT kept EQUAL 100 OR NOT per_sample EQUAL 0.5)
+  message(FATAL_ERROR "--max-similar-pairs-per-sample 0.5: ${kept} similar pairs kept of ${similar}, "
+                      "reported '${per_sample}'")
+endif()
+
 # 2c. --tries: at 300 samples the two snowmen's map with seed 0 holds the small
 # snowman in place (fixed_point_share about 0.48); the map with seed 1 holds
 # nothing in place (about 0; it mirrors each snowman across the plane through
@@ -376,6 +386,8 @@ run(1 --shape snowman --out ${WORK_DIR}/x --time-limit soon)
 run(1 --shape snowman --out ${WORK_DIR}/x --geodesics magic)
 run(1 --shape snowman --out ${WORK_DIR}/x --samples many)
 run(1 --shape snowman --out ${WORK_DIR}/x --max-voting-pairs 0)
+run(1 --shape snowman --out ${WORK_DIR}/x --max-similar-pairs-per-sample -1)
+run(1 --shape snowman --out ${WORK_DIR}/x --max-similar-pairs-per-sample all)
 run(1 --shape snowman --out ${WORK_DIR}/x --tries 0)
 run(1 --shape snowman --out ${WORK_DIR}/x --tries 101)
 run(1 --shape snowman --out ${WORK_DIR}/x --seed 99999999999)

@@ -16,10 +16,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <iterator>
+#include <limits>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -291,6 +294,15 @@ TEST(Signatures, EmptyRingsAndParameters)
     std::vector<std::pair<std::size_t, std::size_t> > out;
     IRS::similar_sample_pairs(whole, std::back_inserter(out), IRS::parameters::similarity_threshold(-0.1));
   });
+  expect_invalid([&] {
+    std::vector<std::pair<std::size_t, std::size_t> > out;
+    IRS::similar_sample_pairs(whole, std::back_inserter(out), IRS::parameters::maximum_similar_pairs_per_sample(-1.));
+  });
+  expect_invalid([&] {
+    std::vector<std::pair<std::size_t, std::size_t> > out;
+    IRS::similar_sample_pairs(whole, std::back_inserter(out),
+                              IRS::parameters::maximum_similar_pairs_per_sample(std::nan("")));
+  });
   const auto other = IRS::generate_sphere<Mesh>(162);
   expect_invalid([&] { IRS::compute_sdf_signatures(other.mesh, d); }); // matrix of another mesh
   try {
@@ -316,9 +328,11 @@ TEST(SimilarityFilter, DefinitionAndPairList)
   std::vector<std::size_t> samples;
   for(std::size_t v = 0; v < num_vertices(g.mesh); v += 4) samples.push_back(v);
   const IRS::Sdf_signatures s = IRS::compute_sdf_signatures(g.mesh, distances(g.mesh, samples));
+  const double no_cap = std::numeric_limits<double>::infinity();
   for(double eps : {0.01, 0.025, 0.1}) {
     std::vector<std::pair<std::size_t, std::size_t> > fast, brute;
-    IRS::similar_sample_pairs(s, std::back_inserter(fast), IRS::parameters::similarity_threshold(eps));
+    IRS::similar_sample_pairs(s, std::back_inserter(fast),
+                              IRS::parameters::similarity_threshold(eps).maximum_similar_pairs_per_sample(no_cap));
     for(std::size_t i = 0; i < s.number_of_samples(); ++i)
       for(std::size_t j = i + 1; j < s.number_of_samples(); ++j)
         if(IRS::passes_similarity_filter(s.signature(i), s.signature(j), eps)) brute.emplace_back(i, j);
@@ -328,8 +342,64 @@ TEST(SimilarityFilter, DefinitionAndPairList)
   }
   std::vector<std::pair<std::size_t, std::size_t> > def, explicit_default;
   IRS::similar_sample_pairs(s, std::back_inserter(def));
-  IRS::similar_sample_pairs(s, std::back_inserter(explicit_default), IRS::parameters::similarity_threshold(0.025));
+  IRS::similar_sample_pairs(s, std::back_inserter(explicit_default),
+                            IRS::parameters::similarity_threshold(0.025).maximum_similar_pairs_per_sample(
+                              IRS::default_maximum_similar_pairs_per_sample));
   EXPECT_EQ(def, explicit_default);
+}
+
+TEST(SimilarityFilter, CapDrawsPairsUniformly)
+{
+  const auto g = IRS::generate_snowman<Mesh>(800);
+  std::vector<std::size_t> samples;
+  for(std::size_t v = 0; v < num_vertices(g.mesh); v += 4) samples.push_back(v);
+  const IRS::Sdf_signatures s = IRS::compute_sdf_signatures(g.mesh, distances(g.mesh, samples));
+  const std::size_t n = s.number_of_samples();
+  const auto np = IRS::parameters::similarity_threshold(0.1);
+  std::vector<std::pair<std::size_t, std::size_t> > all;
+  IRS::similar_sample_pairs(s, std::back_inserter(all),
+                            np.maximum_similar_pairs_per_sample(std::numeric_limits<double>::infinity()));
+  ASSERT_GT(all.size(), 8 * n) << "the filter must pass enough pairs for the caps below to bind";
+  auto capped = [&](double per_sample, unsigned int seed) {
+    std::vector<std::pair<std::size_t, std::size_t> > out;
+    IRS::similar_sample_pairs(s, std::back_inserter(out), np.maximum_similar_pairs_per_sample(per_sample).random_seed(seed));
+    return out;
+  };
+  for(double per_sample : {0., 0.5, 1., 3.5, 8.}) {
+    const std::vector<std::pair<std::size_t, std::size_t> > c = capped(per_sample, 7);
+    // exactly floor(cap * samples) pairs, each a similar pair, in lexicographic order, once
+    EXPECT_EQ(c.size(), std::size_t(per_sample * double(n))) << per_sample;
+    EXPECT_TRUE(std::is_sorted(c.begin(), c.end()));
+    EXPECT_TRUE(std::adjacent_find(c.begin(), c.end()) == c.end());
+    EXPECT_TRUE(std::includes(all.begin(), all.end(), c.begin(), c.end())) << per_sample;
+    // the draw of the voting cap, on the list without the cap
+    std::vector<std::pair<std::size_t, std::size_t> > expected;
+    for(std::size_t k : IRS::internal::draw_pairs(all.size(), c.size(), 7)) expected.push_back(all[k]);
+    EXPECT_EQ(c, expected) << per_sample;
+    EXPECT_EQ(c, capped(per_sample, 7)) << "same seed, same pairs";
+  }
+  EXPECT_NE(capped(8., 7), capped(8., 8)) << "another seed, other pairs";
+  // uniform, not the most similar: the kept share is about the same among the
+  // most similar half of the pairs and the least similar half
+  std::vector<std::pair<double, std::pair<std::size_t, std::size_t> > > ranked;
+  for(const auto& pq : all) {
+    double d = 0., ni = 0., nj = 0.;
+    for(std::size_t k = 0; k < s.number_of_rings(); ++k) {
+      d += (s(pq.first, k) - s(pq.second, k)) * (s(pq.first, k) - s(pq.second, k));
+      ni += s(pq.first, k) * s(pq.first, k);
+      nj += s(pq.second, k) * s(pq.second, k);
+    }
+    ranked.push_back({std::sqrt(d / (std::max)(ni, nj)), pq});
+  }
+  std::sort(ranked.begin(), ranked.end());
+  const std::vector<std::pair<std::size_t, std::size_t> > half = capped(double(all.size()) / double(2 * n), 7);
+  std::size_t kept_of_most_similar = 0;
+  for(std::size_t k = 0; k < ranked.size() / 2; ++k)
+    kept_of_most_similar += std::binary_search(half.begin(), half.end(), ranked[k].second) ? 1 : 0;
+  const double share = double(kept_of_most_similar) / double(ranked.size() / 2);
+  EXPECT_NEAR(share, double(half.size()) / double(all.size()), 0.05) << kept_of_most_similar << " of the " << ranked.size() / 2 << " most similar kept";
+  // a cap that does not bind changes nothing
+  EXPECT_EQ(capped((double(all.size()) + 0.5) / double(n), 7), all);
 }
 
 TEST(Signatures, HeatAndDijkstraAgreeOnMirrorPairs)

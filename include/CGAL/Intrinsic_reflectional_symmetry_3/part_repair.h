@@ -467,7 +467,7 @@ Part_repair_protocol_result run_part_repair_protocol(const TriangleMesh& tm, con
   const Geodesic_distance_matrix D = compute_geodesic_distance_matrix(oracle, samples);
   const Sdf_signatures sig = sdf_signatures(vertex_sdf_values(damaged), vertex_areas(damaged), D);
   std::vector<std::pair<std::size_t, std::size_t> > similar;
-  similar_sample_pairs(sig, std::back_inserter(similar));
+  similar_sample_pairs(sig, std::back_inserter(similar), parameters::random_seed(seed));
   auto tau = get(CGAL::dynamic_vertex_property_t<double>(), damaged);
   const Irsa_voting_result voting = compute_irsa_transform(damaged, D, similar, tau, np);
   res.seconds_pipeline = timer.time();

@@ -35,6 +35,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/errors.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/parameters.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/voting_common.h>
 
 #include <CGAL/mesh_segmentation.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -62,6 +63,16 @@ namespace Intrinsic_reflectional_symmetry_3 {
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// Default of the `similarity_threshold` named parameter: the paper's `eps_SIM`.
 constexpr double default_similarity_threshold = 0.025;
+
+/// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
+/// Default of the `maximum_similar_pairs_per_sample` named parameter of
+/// `similar_sample_pairs()`. Real shapes whose SDF tells their parts apart
+/// pass 2-60 pairs per sample (FAUST 5-6 at 1,250 samples, SCAPE 10-17 at
+/// 3,000, 57 of the 63 PSB models of the benchmark 2-52 at `min(3000, V/4)`);
+/// a nearly uniform SDF (a cup's walls, a bearing's ring, a table) passes
+/// 100-450, and the voting, whose cost grows as the square of the similar
+/// pairs, then takes many minutes.
+constexpr double default_maximum_similar_pairs_per_sample = 64.;
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// Default of the `number_of_signature_rings` named parameter: the paper's `b`.
@@ -477,6 +488,19 @@ bool passes_similarity_filter(const SignatureA& a, const SignatureB& b,
 /// std::size_t>` of row indices, not vertex indices) whose signatures pass
 /// the similarity filter, in lexicographic order, to `out`.
 ///
+/// Where more than `maximum_similar_pairs_per_sample` times the number of
+/// samples pass, only that many are written, drawn uniformly at random with
+/// `random_seed`. Signatures that let that many pairs through do not tell
+/// the parts of the shape apart (a cup's walls, a bearing's ring: 100-450
+/// pairs per sample pass, against 5-60 on shapes whose SDF varies), and the
+/// voting's cost grows as the square of the similar pairs (PSB cup_036:
+/// 541K similar pairs, 239 per sample, 23 minutes of voting on one core).
+/// The draw is uniform rather than the most similar pairs: the SDF is
+/// measured by rays in space, so the pairs of an extrinsic mirror have the
+/// most equal signatures, and ranking by similarity would favour them over
+/// the intrinsic symmetries the method is for (a bent capsule's top curve
+/// becomes its bending plane).
+///
 /// Only pairs whose norms are within a factor `1 - eps` of each other can
 /// pass (`| ||a|| - ||b|| | <= ||a - b||`), so the rows are sorted by norm
 /// and each is compared with its neighbours in that order only.
@@ -486,6 +510,17 @@ bool passes_similarity_filter(const SignatureA& a, const SignatureB& b,
 ///     \cgalParamDescription{`eps_SIM`, relative L2 tolerance}
 ///     \cgalParamType{double, in [0, 1)}
 ///     \cgalParamDefault{0.025 (the paper's value)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_similar_pairs_per_sample}
+///     \cgalParamDescription{at most this many pairs per sample are written, drawn at random;
+///       `std::numeric_limits<double>::infinity()` for the paper's filter without a cap}
+///     \cgalParamType{double >= 0}
+///     \cgalParamDefault{`default_maximum_similar_pairs_per_sample` (64)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{random_seed}
+///     \cgalParamDescription{seed of that draw}
+///     \cgalParamType{unsigned int}
+///     \cgalParamDefault{0}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
@@ -500,6 +535,10 @@ OutputIterator similar_sample_pairs(const Sdf_signatures& signatures, OutputIter
                                       default_similarity_threshold);
   internal::check_parameter(eps >= 0. && eps < 1.,
                             "similarity_threshold must be in [0, 1), got " + std::to_string(eps));
+  const double per_sample = choose_parameter(get_parameter(np, internal_np::maximum_similar_pairs_per_sample),
+                                             default_maximum_similar_pairs_per_sample);
+  internal::check_parameter(per_sample >= 0.,
+                            "maximum_similar_pairs_per_sample must be >= 0, got " + std::to_string(per_sample));
   const std::size_t s = signatures.number_of_samples();
   std::vector<double> norm(s);
   for(std::size_t i = 0; i < s; ++i) {
@@ -523,6 +562,13 @@ OutputIterator similar_sample_pairs(const Sdf_signatures& signatures, OutputIter
     }
   }
   std::sort(pairs.begin(), pairs.end());
+  const double cap = per_sample * double(s);
+  if(double(pairs.size()) > cap) {
+    const unsigned int seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+    const std::vector<std::size_t> kept = internal::draw_pairs(pairs.size(), std::size_t(cap), seed);
+    for(std::size_t k = 0; k < kept.size(); ++k) pairs[k] = pairs[kept[k]]; // kept[k] >= k
+    pairs.resize(kept.size());
+  }
   return std::copy(pairs.begin(), pairs.end(), out);
 }
 

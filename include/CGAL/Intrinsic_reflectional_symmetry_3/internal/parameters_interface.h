@@ -24,6 +24,7 @@ CGAL_IRS_add_named_parameter(signature_radius_t, signature_radius, signature_rad
 CGAL_IRS_add_named_parameter(sdf_cone_angle_t, sdf_cone_angle, sdf_cone_angle)
 CGAL_IRS_add_named_parameter(sdf_number_of_rays_t, sdf_number_of_rays, sdf_number_of_rays)
 CGAL_IRS_add_named_parameter(similarity_threshold_t, similarity_threshold, similarity_threshold)
+CGAL_IRS_add_named_parameter(maximum_similar_pairs_per_sample_t, maximum_similar_pairs_per_sample, maximum_similar_pairs_per_sample)
 // voting filters (paper section 3.3)
 CGAL_IRS_add_named_parameter(distance_threshold_t, distance_threshold, distance_threshold)
 CGAL_IRS_add_named_parameter(axial_threshold_t, axial_threshold, axial_threshold)

@@ -256,10 +256,11 @@ canonical_similar_pairs(const std::vector<std::pair<std::size_t, std::size_t>>& 
   return out;
 }
 
-/// Indices of the voting pairs: all pairs, or `cap` of them drawn uniformly
-/// without replacement with CGAL::Random(seed) (partial Fisher-Yates), kept in
-/// increasing order.
-inline std::vector<std::size_t> select_voting_pairs(std::size_t number_of_pairs, std::size_t cap, unsigned int seed)
+/// Indices 0 .. number_of_pairs - 1: all of them, or `cap` of them drawn
+/// uniformly without replacement with CGAL::Random(seed) (partial
+/// Fisher-Yates), in increasing order (the voting pairs of a capped vote, the
+/// similar pairs that `similar_sample_pairs()` keeps).
+inline std::vector<std::size_t> draw_pairs(std::size_t number_of_pairs, std::size_t cap, unsigned int seed)
 {
   std::vector<std::size_t> idx(number_of_pairs);
   for(std::size_t k = 0; k < number_of_pairs; ++k) idx[k] = k;
@@ -356,7 +357,7 @@ Voting_setup make_voting_setup(const TriangleMesh& tm, const Geodesic_distance_m
   st.locality_radius = st.locality_radius_in_spacings * st.mean_sample_spacing;
 
   s.similar_pairs = canonical_similar_pairs(similar_pairs, n);
-  s.voting_pairs = select_voting_pairs(s.similar_pairs.size(),
+  s.voting_pairs = draw_pairs(s.similar_pairs.size(),
                                        cap >= double(s.similar_pairs.size()) ? s.similar_pairs.size()
                                                                               : std::size_t(cap),
                                        s.random_seed);

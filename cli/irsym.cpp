@@ -528,7 +528,7 @@ Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, co
   const std::size_t many_similar_pairs = 100000;
   if(opt.max_voting_pairs == 0 && similar.size() > many_similar_pairs)
     std::cerr << "[irsym] " << similar.size() << " of " << r.samples.size() * (r.samples.size() - 1) / 2
-              << " sample pairs pass the similarity filter (a nearly uniform SDF): the voting may take minutes;"
+              << " sample pairs are kept by the similarity filter (a nearly uniform SDF): the voting may take minutes;"
                  " --max-similar-pairs-per-sample K keeps fewer of them, --max-voting-pairs N lets only N vote\n";
   r.tau.assign(num_vertices(work), 0.);
   const std::size_t cap = opt.max_voting_pairs > 0 ? std::size_t(opt.max_voting_pairs)

@@ -157,8 +157,8 @@ struct Options
 {
   std::string data = "../shared/data";
   std::size_t samples = 1000;
-  double similarity = -1.; // < 0: the package's default
-  double similar_per_sample = -1.; // < 0: the package's default
+  double similarity = IRS::default_similarity_threshold; // eps_SIM
+  double similar_per_sample = IRS::default_maximum_similar_pairs_per_sample;
   double distance = IRS::internal::default_distance_threshold; // eps_DIS
   double region_tolerance = IRS::internal::default_region_symmetry_tolerance; // of the regions and the map
   unsigned seed = 0;
@@ -223,7 +223,6 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
                                   const std::vector<double>& vertex_areas, const Pipeline_result* guided_by = nullptr,
                                   const std::vector<std::ptrdiff_t>* global_map = nullptr)
 {
-  const double similarity = o.similarity;
   Pipeline_result r;
   CGAL::Real_timer total, t;
   total.start();
@@ -247,12 +246,10 @@ Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::ve
 
   const IRS::Sdf_signatures signatures = IRS::sdf_signatures(vertex_sdf, vertex_areas, D);
   std::vector<std::pair<std::size_t, std::size_t>> similar;
-  IRS::similar_sample_pairs(
-    signatures, std::back_inserter(similar),
-    IRS::parameters::similarity_threshold(similarity < 0. ? IRS::default_similarity_threshold : similarity)
-      .maximum_similar_pairs_per_sample(o.similar_per_sample < 0. ? IRS::default_maximum_similar_pairs_per_sample
-                                                                  : o.similar_per_sample)
-      .random_seed(o.seed));
+  IRS::similar_sample_pairs(signatures, std::back_inserter(similar),
+                            IRS::parameters::similarity_threshold(o.similarity)
+                              .maximum_similar_pairs_per_sample(o.similar_per_sample)
+                              .random_seed(o.seed));
   if(guided)
   {
     std::vector<std::pair<std::size_t, std::size_t>> swapped;
@@ -1069,8 +1066,9 @@ int main(int argc, char** argv)
             << (o.samples ? std::to_string(o.samples) : std::string("min(3000, V / 4)"))
             << " samples per shape (seed" << (o.seeds.size() > 1 ? "s " : " ") << seed_list(o.seeds)
             << (o.tries > 1 ? ", up to " + std::to_string(o.tries) + " runs where the map is suspect" : std::string())
-            << ")" << (o.similarity >= 0. ? ", eps_SIM " + std::to_string(o.similarity) : std::string())
-            << (o.similar_per_sample >= 0. ? ", at most " + std::to_string(o.similar_per_sample) + " similar pairs per sample" : std::string())
+            << ")" << (o.similarity != IRS::default_similarity_threshold ? ", eps_SIM " + std::to_string(o.similarity) : std::string())
+            << (o.similar_per_sample != IRS::default_maximum_similar_pairs_per_sample
+                  ? ", at most " + std::to_string(o.similar_per_sample) + " similar pairs per sample" : std::string())
             << (o.distance != IRS::internal::default_distance_threshold ? ", eps_DIS " + std::to_string(o.distance) : std::string())
             << (o.region_tolerance != IRS::internal::default_region_symmetry_tolerance
                   ? ", symmetry_tolerance of the regions and map " + std::to_string(o.region_tolerance)

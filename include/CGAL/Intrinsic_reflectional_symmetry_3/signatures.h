@@ -35,7 +35,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/errors.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/parameters.h>
-#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/voting_common.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/draw_pairs.h>
 
 #include <CGAL/mesh_segmentation.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -67,8 +67,8 @@ constexpr double default_similarity_threshold = 0.025;
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// Default of the `maximum_similar_pairs_per_sample` named parameter of
 /// `similar_sample_pairs()`. Real shapes whose SDF tells their parts apart
-/// pass 2-60 pairs per sample (FAUST 5-6 at 1,250 samples, SCAPE 10-17 at
-/// 3,000, 57 of the 63 PSB models of the benchmark 2-52 at `min(3000, V/4)`);
+/// pass 2-52 pairs per sample (FAUST 5-6 at 1,250 samples, SCAPE 10-17 at
+/// 3,000, 59 of the 63 PSB models of the benchmark 2-52 at `min(3000, V/4)`);
 /// a nearly uniform SDF (a cup's walls, a bearing's ring, a table) passes
 /// 100-450, and the voting, whose cost grows as the square of the similar
 /// pairs, then takes many minutes.
@@ -492,9 +492,9 @@ bool passes_similarity_filter(const SignatureA& a, const SignatureB& b,
 /// samples pass, only that many are written, drawn uniformly at random with
 /// `random_seed`. Signatures that let that many pairs through do not tell
 /// the parts of the shape apart (a cup's walls, a bearing's ring: 100-450
-/// pairs per sample pass, against 5-60 on shapes whose SDF varies), and the
+/// pairs per sample pass, against 2-52 on shapes whose SDF varies), and the
 /// voting's cost grows as the square of the similar pairs (PSB cup_036:
-/// 541K similar pairs, 239 per sample, 23 minutes of voting on one core).
+/// 543K similar pairs, 239 per sample, 23 minutes of voting on one core).
 /// The draw is uniform rather than the most similar pairs: the SDF is
 /// measured by rays in space, so the pairs of an extrinsic mirror have the
 /// most equal signatures, and ranking by similarity would favour them over

@@ -10,9 +10,9 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/errors.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/parameters.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/internal/draw_pairs.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Random.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -256,27 +256,6 @@ canonical_similar_pairs(const std::vector<std::pair<std::size_t, std::size_t>>& 
   return out;
 }
 
-/// Indices 0 .. number_of_pairs - 1: all of them, or `cap` of them drawn
-/// uniformly without replacement with CGAL::Random(seed) (partial
-/// Fisher-Yates), in increasing order (the voting pairs of a capped vote, the
-/// similar pairs that `similar_sample_pairs()` keeps).
-inline std::vector<std::size_t> draw_pairs(std::size_t number_of_pairs, std::size_t cap, unsigned int seed)
-{
-  std::vector<std::size_t> idx(number_of_pairs);
-  for(std::size_t k = 0; k < number_of_pairs; ++k) idx[k] = k;
-  if(cap >= number_of_pairs)
-    return idx;
-  CGAL::Random rng(seed);
-  for(std::size_t k = 0; k < cap; ++k)
-  {
-    const std::size_t j = rng.uniform_int<std::size_t>(k, number_of_pairs - 1);
-    std::swap(idx[k], idx[j]);
-  }
-  idx.resize(cap);
-  std::sort(idx.begin(), idx.end());
-  return idx;
-}
-
 /// Reads and checks the named parameters, and computes the per-transform data.
 template <class TriangleMesh, class NamedParameters>
 Voting_setup make_voting_setup(const TriangleMesh& tm, const Geodesic_distance_matrix& D,
@@ -358,9 +337,8 @@ Voting_setup make_voting_setup(const TriangleMesh& tm, const Geodesic_distance_m
 
   s.similar_pairs = canonical_similar_pairs(similar_pairs, n);
   s.voting_pairs = draw_pairs(s.similar_pairs.size(),
-                                       cap >= double(s.similar_pairs.size()) ? s.similar_pairs.size()
-                                                                              : std::size_t(cap),
-                                       s.random_seed);
+                              cap >= double(s.similar_pairs.size()) ? s.similar_pairs.size() : std::size_t(cap),
+                              s.random_seed);
   return s;
 }
 

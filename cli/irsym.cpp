@@ -120,6 +120,12 @@ usage: irsym MESH --out DIR [options]
   --target-vertices N  first remesh or decimate to about N vertices (default: keep the mesh)
   --remesh             reach --target-vertices by isotropic remeshing (default: decimation
                        when reducing, remeshing when refining)
+  --mend-input         first mend on a copy what repair_input() mends: pinched (non-manifold)
+                       vertices, polygons, faces with collinear vertices and isolated
+                       vertices (prepare_mesh's mend_input; SCAPE's meshes have a pinched
+                       vertex); all outputs still refer to the input's vertices and faces,
+                       report.json says what was mended ("mended"). Without it such a mesh
+                       is bad input; what mending leaves (a face of tiny area) still is
   --fill-holes         first fill every hole (boundary cycle) of the mesh with a refined and
                        faired patch (prepare_mesh's fill_holes, CGAL's hole filling); all
                        outputs still refer to the input's vertices and faces. Every boundary
@@ -205,7 +211,7 @@ struct Options
   double time_limit = 0.; // seconds, 0: none
   double max_hole_length = std::numeric_limits<double>::infinity(); // --fill-holes bound, infinity: none
   double max_similar_per_sample = IRS::default_maximum_similar_pairs_per_sample; // infinity: none
-  bool remesh = false, repair = false, nested = false, fill_holes = false;
+  bool remesh = false, repair = false, nested = false, fill_holes = false, mend_input = false;
   std::string up = "+Z";
 };
 
@@ -262,6 +268,7 @@ Options parse_options(int argc, char** argv)
     else if(a == "--time-limit") o.time_limit = parse_positive(a, value());
     else if(a == "--remesh") o.remesh = true;
     else if(a == "--fill-holes") o.fill_holes = true;
+    else if(a == "--mend-input") o.mend_input = true;
     else if(a == "--max-hole-length") o.max_hole_length = parse_positive(a, value());
     else if(a == "--repair") o.repair = true;
     else if(a == "--nested-symmetries") o.nested = true;
@@ -463,11 +470,23 @@ irsym::Json repair_outputs(const Mesh& work, const IRS::Geodesic_distance_matrix
 template <typename GeomTraits>
 std::string preparation_words(const IRS::Prepared_mesh<GeomTraits>& prepared)
 {
-  std::string words = prepared.number_of_filled_holes() > 0 ? "holes filled" : "";
+  std::string words = prepared.input_repairs().any() ? "mended" : "";
+  if(prepared.number_of_filled_holes() > 0) words += std::string(words.empty() ? "" : ", ") + "holes filled";
   if(prepared.preparation() != IRS::Mesh_preparation::none)
     words += std::string(words.empty() ? "" : ", ") +
              (prepared.preparation() == IRS::Mesh_preparation::decimation ? "decimated" : "remeshed");
   return words.empty() ? "none" : words;
+}
+
+// what --mend-input mended (repair_input()), for report.json
+irsym::Json mended_json(const IRS::Input_repairs& r)
+{
+  irsym::Json j = irsym::Json::object();
+  j.add("duplicated_non_manifold_vertices", r.duplicated_non_manifold_vertices)
+   .add("triangulated_faces", r.triangulated_faces)
+   .add("removed_degenerate_faces", r.removed_degenerate_faces)
+   .add("removed_isolated_vertices", r.removed_isolated_vertices);
+  return j;
 }
 
 // the stages that depend on the seed: samples, geodesic matrix, signatures,
@@ -606,7 +625,10 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     if(!within_limit(1.)) throw IRS::Operation_cancelled("the " + stage + " ended after it");
   };
   const fs::path out(opt.out_dir);
-  const IRS::Input_report stats = IRS::check_input(input);
+  // with --mend-input, the statistics are those of the mended copy (the input fails the check)
+  const IRS::Input_report stats = opt.mend_input
+    ? IRS::check_input(IRS::prepare_mesh(input, IRS::parameters::mend_input(true)).working_mesh())
+    : IRS::check_input(input);
   {
     irsym::Json in = irsym::Json::object();
     in.add("vertices", stats.number_of_vertices).add("faces", stats.number_of_faces)
@@ -636,7 +658,8 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
 
   log.start("prepare");
   // without --remesh, prepare_mesh() decimates to a lower target and remeshes to a higher one
-  const auto fill = IRS::parameters::fill_holes(opt.fill_holes).maximum_hole_boundary_length(opt.max_hole_length);
+  const auto fill = IRS::parameters::fill_holes(opt.fill_holes).maximum_hole_boundary_length(opt.max_hole_length)
+                      .mend_input(opt.mend_input);
   const auto prepared = opt.target_vertices <= 0 ? IRS::prepare_mesh(input, fill)
     : opt.remesh ? IRS::prepare_mesh(input, fill.target_number_of_vertices(std::size_t(opt.target_vertices))
                                               .isotropic_remeshing(true))
@@ -788,6 +811,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
   res.add("working_vertices", std::size_t(num_vertices(work)))
      .add("working_faces", std::size_t(num_faces(work)))
      .add("preparation", preparation_words(prepared))
+     .add("mended", mended_json(prepared.input_repairs()))
      .add("filled_holes", prepared.number_of_filled_holes())
      .add("holes_left_open", prepared.number_of_holes_left_open())
      .add("samples", samples.size())
@@ -861,6 +885,7 @@ int main(int argc, char** argv)
           .add("samples", opt.samples ? double(*opt.samples) : std::numeric_limits<double>::quiet_NaN())
           .add("seed", opt.seed).add("tries", opt.tries).add("geodesics", opt.geodesics).add("threads", threads)
           .add("target_vertices", opt.target_vertices).add("remesh", opt.remesh).add("fill_holes", opt.fill_holes)
+          .add("mend_input", opt.mend_input)
           .add("max_hole_length", opt.max_hole_length).add("up", opt.up)
           .add("repair", opt.repair).add("nested_symmetries", opt.nested).add("time_limit", opt.time_limit)
           .add("max_similar_pairs_per_sample", opt.max_similar_per_sample) // null: none
@@ -885,7 +910,13 @@ int main(int argc, char** argv)
     return rc;
   }
   catch(const IRS::Input_error& e) {
-    std::cerr << "irsym: bad input: " << e.what() << '\n';
+    // say where --mend-input would help: the defects repair_input() mends
+    const bool mendable = !opt.mend_input && (e.problem() == IRS::Input_problem::non_manifold_vertex ||
+                                              e.problem() == IRS::Input_problem::not_triangle_mesh ||
+                                              e.problem() == IRS::Input_problem::isolated_vertex ||
+                                              e.problem() == IRS::Input_problem::degenerate_face);
+    std::cerr << "irsym: bad input: " << e.what()
+              << (mendable ? " (--mend-input tries to mend it, on a copy)" : "") << '\n';
     return 2;
   }
   catch(const IRS::Operation_cancelled& e) {

@@ -373,6 +373,43 @@ if(NOT last_err MATCHES "too many samples")
   message(FATAL_ERROR "unclear message for too many samples: ${last_err}")
 endif()
 
+# 3a. --mend-input: a defect repair_input() mends (here an isolated vertex, after
+# the snowman's vertices) is bad input without it, with a hint, and mended with
+# it; the outputs still have a line per input vertex and face
+file(STRINGS ${WORK_DIR}/snowman/snowman.off off)
+list(GET off 1 counts)
+string(REGEX MATCHALL "[0-9]+" counts "${counts}")
+list(GET counts 0 nv)
+list(GET counts 1 nf)
+math(EXPR nv1 "${nv} + 1")
+math(EXPR after_vertices "${nv} + 2")
+list(INSERT off ${after_vertices} "7 7 7")
+list(REMOVE_AT off 1)
+list(INSERT off 1 "${nv1} ${nf} 0")
+string(REPLACE ";" "\n" off "${off}")
+file(WRITE ${WORK_DIR}/isolated.off "${off}\n")
+run(2 ${WORK_DIR}/isolated.off --samples 100 --out ${WORK_DIR}/bad)
+if(NOT last_err MATCHES "isolated vertex: vertex ${nv}" OR NOT last_err MATCHES "--mend-input")
+  message(FATAL_ERROR "unclear message for an isolated vertex: ${last_err}")
+endif()
+run(0 ${WORK_DIR}/isolated.off --mend-input --samples 100 --tries 1 --out ${WORK_DIR}/mended)
+file(READ ${WORK_DIR}/mended/report.json report)
+string(JSON removed ERROR_VARIABLE jerr GET "${report}" results mended removed_isolated_vertices)
+string(JSON preparation ERROR_VARIABLE jerr2 GET "${report}" results preparation)
+string(JSON wv ERROR_VARIABLE jerr3 GET "${report}" results working_vertices)
+if(jerr OR jerr2 OR jerr3 OR NOT removed EQUAL 1 OR NOT preparation STREQUAL "mended" OR NOT wv EQUAL nv)
+  message(FATAL_ERROR "report.json: --mend-input on an isolated vertex: removed '${removed}', preparation "
+                      "'${preparation}', working vertices '${wv}' (expected 1, mended, ${nv})")
+endif()
+file(STRINGS ${WORK_DIR}/mended/symmetric_map.txt mapped)
+file(STRINGS ${WORK_DIR}/mended/regions.txt regions)
+list(LENGTH mapped n_mapped)
+list(LENGTH regions n_regions)
+if(NOT n_mapped EQUAL nv1 OR NOT n_regions EQUAL nf)
+  message(FATAL_ERROR "--mend-input: ${n_mapped} map lines for ${nv1} input vertices, ${n_regions} region lines "
+                      "for ${nf} input faces")
+endif()
+
 # 3b. a time limit that has already passed stops the run (exit 4) once the first stage ends, with a message
 run(4 --shape snowman --samples 200 --time-limit 0.000001 --out ${WORK_DIR}/limited)
 if(NOT last_err MATCHES "time limit of 1e-06 s was reached" OR NOT last_err MATCHES "preparation ended after it")

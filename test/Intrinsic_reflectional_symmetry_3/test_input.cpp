@@ -25,6 +25,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <numeric>
 #include <random>
 #include <string>
 #include <vector>
@@ -922,5 +923,100 @@ TEST(Preparation, FillHolesThenRemeshAndClosedInputUnchanged)
   const auto same = IRS::prepare_mesh(closed, IRS::parameters::fill_holes(true));
   EXPECT_TRUE(same.is_identity());
   EXPECT_EQ(same.number_of_filled_holes(), 0u);
+  EXPECT_EQ(num_vertices(same.working_mesh()), num_vertices(closed));
+}
+
+// mend_input(true): what repair_input() mends is mended before the check, on
+// a copy, and the maps lead back to the input (the duplicated copies of a
+// pinched vertex both to it; a quad to one of its triangles); what it leaves
+// still throws, saying so; an input without defects stays an exact copy
+TEST(Preparation, MendInputThenMapBack)
+{
+  const std::string path = write_file("two_cones_mend.off", two_cones_off);
+  Mesh tm;
+  ASSERT_NO_THROW(IRS::read_mesh(path, tm));
+  expect_error([&] { IRS::prepare_mesh(tm); }, IRS::Input_problem::non_manifold_vertex, {"vertex 3"});
+  const auto prepared = IRS::prepare_mesh(tm, IRS::parameters::mend_input(true));
+  EXPECT_FALSE(prepared.is_identity());
+  EXPECT_EQ(prepared.input_repairs().duplicated_non_manifold_vertices, 1u);
+  EXPECT_TRUE(prepared.input_repairs().output_to_input_vertex.empty());
+  EXPECT_EQ(num_vertices(tm), 7u); // the input is not modified
+  const Mesh& work = prepared.working_mesh();
+  ASSERT_EQ(num_vertices(work), 8u);
+  ASSERT_NO_THROW(IRS::check_input(work));
+  ASSERT_EQ(prepared.number_of_input_vertices(), 7u);
+  ASSERT_EQ(prepared.number_of_input_faces(), 8u);
+  auto points_of = [](const Mesh& m) {
+    std::vector<Point> p;
+    for(auto v : vertices(m)) p.push_back(m.point(v));
+    return p;
+  };
+  const std::vector<Point> in = points_of(tm), wp = points_of(work);
+  std::vector<std::size_t> copies(7, 0);
+  for(std::size_t w = 0; w < 8; ++w)
+  {
+    const std::size_t i = prepared.working_to_input_vertex(w);
+    ASSERT_LT(i, 7u);
+    EXPECT_EQ(wp[w], in[i]);
+    ++copies[i];
+  }
+  EXPECT_EQ(copies, (std::vector<std::size_t>{1, 1, 1, 2, 1, 1, 1}));
+  for(std::size_t i = 0; i < 7; ++i)
+    EXPECT_EQ(wp[prepared.input_to_working_vertex(i)], in[i]) << "input vertex " << i;
+  // each input face to the working face of the same corners
+  std::vector<std::array<Point, 3>> in_faces, work_faces;
+  for(const Mesh* m : std::vector<const Mesh*>{&tm, &work})
+    for(auto f : faces(*m))
+    {
+      std::array<Point, 3> c;
+      std::size_t k = 0;
+      for(auto v : vertices_around_face(halfedge(f, *m), *m)) c[k++] = m->point(v);
+      std::sort(c.begin(), c.end());
+      (m == &tm ? in_faces : work_faces).push_back(c);
+    }
+  for(std::size_t j = 0; j < 8; ++j)
+    EXPECT_EQ(in_faces[j], work_faces[prepared.input_to_working_face(j)]) << "input face " << j;
+  // a map of the working mesh onto itself comes back as the same map on the input
+  std::vector<std::ptrdiff_t> identity(8);
+  std::iota(identity.begin(), identity.end(), std::ptrdiff_t(0));
+  const std::vector<std::ptrdiff_t> back = IRS::transfer_vertex_map_to_input(prepared, identity);
+  for(std::size_t i = 0; i < 7; ++i) EXPECT_EQ(back[i], std::ptrdiff_t(i));
+  Polyhedron ph; // any FaceGraph
+  ASSERT_NO_THROW(IRS::read_mesh(path, ph));
+  const auto from_polyhedron = IRS::prepare_mesh(ph, IRS::parameters::mend_input(true));
+  EXPECT_EQ(num_vertices(from_polyhedron.working_mesh()), 8u);
+  EXPECT_EQ(from_polyhedron.input_repairs().duplicated_non_manifold_vertices, 1u);
+
+  // a quad: triangulated, and the input's face 4 maps to a triangle of the base
+  const std::string pyramid = write_file("pyramid_mend.off",
+    "OFF\n5 5 0\n"
+    "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n"
+    "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n4 0 3 2 1\n");
+  Mesh pm;
+  ASSERT_NO_THROW(IRS::read_mesh(pyramid, pm));
+  const auto tri = IRS::prepare_mesh(pm, IRS::parameters::mend_input(true));
+  EXPECT_EQ(tri.input_repairs().triangulated_faces, 1u);
+  const Mesh& tw = tri.working_mesh();
+  EXPECT_EQ(num_faces(tw), 6u);
+  std::size_t base_corners = 0;
+  const Mesh::Face_index base(Mesh::size_type(tri.input_to_working_face(4)));
+  for(auto v : vertices_around_face(halfedge(base, tw), tw)) base_corners += tw.point(v).z() == 0.;
+  EXPECT_EQ(base_corners, 3u);
+
+  // not mendable: a non-finite coordinate on a face, named on the input
+  std::vector<Point> points{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0),
+                            Point(0, 0, std::numeric_limits<double>::quiet_NaN())};
+  std::vector<std::vector<std::size_t>> polygons{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  Mesh nan_mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, nan_mesh);
+  const std::size_t e = expect_error([&] { IRS::prepare_mesh(nan_mesh, IRS::parameters::mend_input(true)); },
+                                     IRS::Input_problem::non_finite_coordinate, {"left after repair_input()"});
+  EXPECT_EQ(e, 3u);
+
+  // nothing to mend: the exact copy, as without mend_input
+  const Mesh closed = sphere<Mesh>(2);
+  const auto same = IRS::prepare_mesh(closed, IRS::parameters::mend_input(true));
+  EXPECT_TRUE(same.is_identity());
+  EXPECT_FALSE(same.input_repairs().any());
   EXPECT_EQ(num_vertices(same.working_mesh()), num_vertices(closed));
 }

@@ -360,8 +360,7 @@ void input_check_mesh(const TriangleMesh& tm, const VPM& vpm, const VIM& vim, co
   Input_offenders non_finite;
   for(vertex_descriptor v : vertices(tm)) {
     const auto& p = get(vpm, v);
-    if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
-       !std::isfinite(CGAL::to_double(p.z())))
+    if(!input_is_finite(p))
       non_finite.add(std::size_t(get(vim, v)), [&] {
         std::ostringstream os;
         os << "vertex " << get(vim, v) << " has coordinates (" << CGAL::to_double(p.x()) << ", "
@@ -668,11 +667,8 @@ Input_repairs repair_input(const TriangleMesh& tm, OutputMesh& out,
 
   // the predicates of remove_degenerate_faces() need finite coordinates
   bool finite = true;
-  for(out_vertex v : vertices(out)) {
-    const auto& p = get(CGAL::vertex_point, out, v);
-    finite = finite && std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
-             std::isfinite(CGAL::to_double(p.z()));
-  }
+  for(out_vertex v : vertices(out))
+    finite = finite && internal::input_is_finite(get(CGAL::vertex_point, out, v));
   if(finite && CGAL::is_triangle_mesh(out)) {
     std::vector<out_face> degenerate;
     PMP::degenerate_faces(out, std::back_inserter(degenerate));

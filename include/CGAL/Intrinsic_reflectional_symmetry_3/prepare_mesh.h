@@ -35,6 +35,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numeric>
+#include <string>
 #include <sstream>
 #include <type_traits>
 #include <utility>
@@ -91,7 +93,13 @@ public:
   /// what was done to the input to get the working mesh
   Mesh_preparation preparation() const { return preparation_; }
   /// whether the working mesh is an exact copy of the input and all maps are identities
-  bool is_identity() const { return preparation_ == Mesh_preparation::none && number_of_filled_holes_ == 0; }
+  bool is_identity() const
+  {
+    return preparation_ == Mesh_preparation::none && number_of_filled_holes_ == 0 && !input_repairs_.any();
+  }
+  /// what `mend_input(true)` mended (`repair_input()`; nothing otherwise); its
+  /// `output_to_input_vertex` is left empty, `working_to_input_vertices()` takes its place
+  const Input_repairs& input_repairs() const { return input_repairs_; }
   /// the number of boundary cycles filled before any remeshing (`fill_holes(true)`)
   std::size_t number_of_filled_holes() const { return number_of_filled_holes_; }
   /// the number of boundary cycles `fill_holes(true)` left open: longer than
@@ -134,9 +142,10 @@ public:
                 std::vector<std::size_t>&& working_to_input_vertex,
                 std::vector<Input_vertex_location>&& input_vertex_locations,
                 std::vector<std::size_t>&& input_face_to_working, std::size_t number_of_filled_holes = 0,
-                std::size_t number_of_holes_left_open = 0)
+                std::size_t number_of_holes_left_open = 0, Input_repairs input_repairs = Input_repairs())
     : working_(std::move(working)), preparation_(preparation), target_edge_length_(target_edge_length),
       number_of_filled_holes_(number_of_filled_holes), number_of_holes_left_open_(number_of_holes_left_open),
+      input_repairs_(std::move(input_repairs)),
       working_to_input_vertex_(std::move(working_to_input_vertex)),
       input_vertex_locations_(std::move(input_vertex_locations)),
       input_face_to_working_(std::move(input_face_to_working))
@@ -148,6 +157,7 @@ private:
   Mesh_preparation preparation_ = Mesh_preparation::none;
   double target_edge_length_ = 0;
   std::size_t number_of_filled_holes_ = 0, number_of_holes_left_open_ = 0;
+  Input_repairs input_repairs_;
   std::vector<std::size_t> working_to_input_vertex_;
   std::vector<Input_vertex_location> input_vertex_locations_;
   std::vector<std::size_t> input_face_to_working_;
@@ -179,6 +189,18 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 /// target vertex count, with the maps between its elements and those of `tm`.
 /// `tm` is never modified.
 ///
+/// - `mend_input(true)`: before anything else, the common defects that
+///   `check_input()` refuses and `repair_input()` mends (pinched vertices,
+///   polygons, faces with collinear vertices, isolated vertices; SCAPE's meshes
+///   have a pinched vertex) are mended on a copy, which is then checked; what is
+///   left (a face of tiny but non-zero area, a non-manifold edge, a non-finite
+///   coordinate on a face) throws as `check_input()` does, the message saying
+///   that it remains after `repair_input()`. Where something was mended, the maps
+///   to the input are those of a remeshed input (below): by nearness, the
+///   duplicated copies of a pinched vertex both leading back to it, and an input
+///   vertex on no face located at its nearest working point (weights 0 where its
+///   coordinates are not finite). `Prepared_mesh::input_repairs()` says what was
+///   mended. Without it, such an input throws.
 /// - `fill_holes(true)`: first, every boundary cycle of the copy is filled by
 ///   `PMP::triangulate_refine_and_fair_hole()` (a patch refined to the density of
 ///   its rim and faired for tangent continuity), so that geodesics and the
@@ -231,6 +253,11 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`, `true` for a target above the vertex count of `tm`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{mend_input}
+///     \cgalParamDescription{whether to mend the defects `repair_input()` mends before checking the input}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{fill_holes}
 ///     \cgalParamDescription{whether to fill every boundary cycle before remeshing or decimation}
 ///     \cgalParamType{`bool`}
@@ -275,7 +302,9 @@ inline double isotropic_edge_length_for_vertex_count(double area, double number_
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws Input_error any problem of `check_input()` on `tm` (`too_many_samples` against
+/// \throws Input_error any problem of `check_input()` on `tm`, or with `mend_input(true)` on
+///   the mended copy (the element index, if any, then refers to the input for a vertex and is
+///   `no_element` for a face or an edge) (`too_many_samples` against
 ///   the working mesh); `invalid_parameter` for a target below 4 or above
 ///   `maximum_target_number_of_vertices`, or for a target above the vertex count of `tm`
 ///   with `isotropic_remeshing(false)`; `invalid_parameter` for a `maximum_hole_boundary_length`
@@ -308,8 +337,34 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
 
-  // the maps below are only meaningful on a valid input
-  internal::input_check_mesh(tm, vpm, vim, fim, gt);
+  // the maps below are only meaningful on a valid input: the input itself, or
+  // with mend_input(true) its mended copy
+  Input_repairs repairs;
+  Working_mesh mended;
+  if(choose_parameter(get_parameter(np, internal_np::mend_input), false)) {
+    repairs = repair_input(tm, mended, np);
+    try {
+      internal::input_check_mesh(mended, get(CGAL::vertex_point, mended), get(boost::vertex_index, mended),
+                                 get(boost::face_index, mended), gt);
+    } catch(const Input_error& e) {
+      const std::string what = e.what(), prefix = std::string(to_string(e.problem())) + ": ";
+      const bool of_vertex = e.problem() == Input_problem::non_manifold_vertex ||
+                             e.problem() == Input_problem::non_finite_coordinate ||
+                             e.problem() == Input_problem::isolated_vertex;
+      const std::size_t element = of_vertex && e.element() < repairs.output_to_input_vertex.size()
+                                    ? repairs.output_to_input_vertex[e.element()] : Input_error::no_element;
+      throw Input_error(e.problem(),
+                        "left after repair_input(), on the mended copy: " +
+                          (what.compare(0, prefix.size(), prefix) == 0 ? what.substr(prefix.size()) : what) +
+                          (element != Input_error::no_element ? " (input vertex " + std::to_string(element) + ")" : ""),
+                        element);
+    }
+    if(!repairs.any()) CGAL::clear(mended);
+  }
+  const bool mends = repairs.any();
+  if(!mends)
+    internal::input_check_mesh(tm, vpm, vim, fim, gt);
+  repairs.output_to_input_vertex.clear(); // the working mesh's own map takes its place
 
   const std::size_t nv = internal::input_count(vertices(tm)), nf = internal::input_count(faces(tm));
   const bool remesh_given = !is_default_parameter<CGAL_NP_CLASS, internal_np::isotropic_remeshing_t>::value;
@@ -350,18 +405,36 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
                       "maximum_hole_boundary_length is given without fill_holes(true): no hole would be filled");
 
   // the exact copy: vertices in vertex-index order, faces in face-index order
+  // (or the mended copy); the input's points and face centroids, for the maps
   std::vector<Point_3> points(nv);
   for(vertex_descriptor v : vertices(tm))
     points[std::size_t(get(vim, v))] = get(vpm, v);
-  std::vector<std::array<std::size_t, 3> > triangles(nf);
-  for(face_descriptor f : faces(tm)) {
-    const halfedge_descriptor h = halfedge(f, tm);
-    triangles[std::size_t(get(fim, f))] = {{std::size_t(get(vim, target(h, tm))),
-                                            std::size_t(get(vim, target(next(h, tm), tm))),
-                                            std::size_t(get(vim, target(next(next(h, tm), tm), tm)))}};
-  }
+  std::vector<Point_3> face_centroids(nf);
   Working_mesh working;
-  PMP::polygon_soup_to_polygon_mesh(points, triangles, working);
+  if(mends) {
+    working = std::move(mended);
+    for(face_descriptor f : faces(tm)) { // polygons too: the centroid of the corners
+      double c[3] = {0, 0, 0}, k = 0;
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
+        const Point_3& p = points[std::size_t(get(vim, target(h, tm)))];
+        c[0] += CGAL::to_double(p.x()); c[1] += CGAL::to_double(p.y()); c[2] += CGAL::to_double(p.z());
+        k += 1;
+      }
+      face_centroids[std::size_t(get(fim, f))] = Point_3(c[0] / k, c[1] / k, c[2] / k);
+    }
+  } else {
+    std::vector<std::array<std::size_t, 3> > triangles(nf);
+    for(face_descriptor f : faces(tm)) {
+      const halfedge_descriptor h = halfedge(f, tm);
+      triangles[std::size_t(get(fim, f))] = {{std::size_t(get(vim, target(h, tm))),
+                                              std::size_t(get(vim, target(next(h, tm), tm))),
+                                              std::size_t(get(vim, target(next(next(h, tm), tm), tm)))}};
+    }
+    const auto centroid = gt.construct_centroid_3_object();
+    for(std::size_t j = 0; j < nf; ++j)
+      face_centroids[j] = centroid(points[triangles[j][0]], points[triangles[j][1]], points[triangles[j][2]]);
+    PMP::polygon_soup_to_polygon_mesh(points, triangles, working);
+  }
   const internal::Prepare_fill_outcome holes = fill_holes
     ? internal::prepare_fill_holes(working, maximum_hole_boundary_length) : internal::Prepare_fill_outcome();
 
@@ -439,7 +512,9 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   std::vector<Input_vertex_location> locations(nv);
   std::vector<std::size_t> face_map(nf);
 
-  if(preparation == Mesh_preparation::none) {
+  // identity maps: the working mesh is the input's copy (with its holes' patches after it)
+  const bool copy = preparation == Mesh_preparation::none && !mends;
+  if(copy) {
     for(std::size_t i = 0; i < nv; ++i) {
       working_to_input[i] = i;
       Input_vertex_location& l = locations[i];
@@ -457,9 +532,23 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   }
 
   // working vertex -> nearest input vertex, for the vertices that are not
-  // copies of input vertices (all of them after remeshing or decimation)
-  const std::size_t first_new_vertex = preparation == Mesh_preparation::none ? nv : 0;
+  // copies of input vertices (all of them after mending, remeshing or
+  // decimation; then the input vertices on no face, or not finite, are left
+  // out: the mending removed them)
+  const std::size_t first_new_vertex = copy ? nv : 0;
   if(first_new_vertex < nw) {
+    std::vector<std::size_t> candidates;
+    if(mends) {
+      std::vector<char> on_face(nv, 0);
+      for(face_descriptor f : faces(tm))
+        for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
+          on_face[std::size_t(get(vim, target(h, tm)))] = 1;
+      for(std::size_t i = 0; i < nv; ++i)
+        if(on_face[i] && internal::input_is_finite(points[i])) candidates.push_back(i);
+    } else {
+      candidates.resize(nv);
+      std::iota(candidates.begin(), candidates.end(), std::size_t(0));
+    }
     typedef CGAL::Search_traits_3<GT> Base_traits;
     typedef typename CGAL::Pointer_property_map<Point_3>::const_type Point_pmap;
     typedef CGAL::Search_traits_adapter<std::size_t, Point_pmap, Base_traits> Traits;
@@ -467,8 +556,7 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
     typedef typename Neighbor_search::Tree Tree;
     typedef typename Neighbor_search::Distance Distance;
     const Point_pmap ppmap = CGAL::make_property_map(std::as_const(points));
-    Tree tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(nv),
-              typename Tree::Splitter(), Traits(ppmap));
+    Tree tree(candidates.begin(), candidates.end(), typename Tree::Splitter(), Traits(ppmap));
     const Distance distance(ppmap);
     for(std::size_t w = first_new_vertex; w < nw; ++w) {
       Neighbor_search search(tree, working.point(working_vertex(static_cast<typename Working_mesh::size_type>(w))),
@@ -478,7 +566,7 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   }
 
   // input vertex -> location on the working mesh; input face -> nearest working face
-  if(preparation != Mesh_preparation::none) {
+  if(!copy) {
     typedef CGAL::AABB_face_graph_triangle_primitive<Working_mesh> Primitive;
     typedef CGAL::AABB_traits<GT, Primitive> AABB_traits;
     typedef CGAL::AABB_tree<AABB_traits> Tree;
@@ -486,6 +574,13 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
     PMP::build_AABB_tree(working, tree);
     tree.accelerate_distance_queries();
     for(std::size_t i = 0; i < nv; ++i) {
+      if(!internal::input_is_finite(points[i])) { // an isolated vertex that mending removed: weights 0
+        const auto hf = halfedge(*faces(working).begin(), working);
+        locations[i].face = std::size_t(*faces(working).begin());
+        locations[i].vertices = {{std::size_t(source(hf, working)), std::size_t(target(hf, working)),
+                                  std::size_t(target(next(hf, working), working))}};
+        continue;
+      }
       const auto loc = PMP::locate_with_AABB_tree(points[i], tree, working);
       const auto hf = halfedge(loc.first, working);
       Input_vertex_location& l = locations[i];
@@ -494,15 +589,12 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
                      std::size_t(target(next(hf, working), working))}};
       for(std::size_t k = 0; k < 3; ++k) l.weights[k] = CGAL::to_double(loc.second[k]);
     }
-    const auto centroid = gt.construct_centroid_3_object();
-    for(std::size_t j = 0; j < nf; ++j) {
-      const Point_3 c = centroid(points[triangles[j][0]], points[triangles[j][1]], points[triangles[j][2]]);
-      face_map[j] = std::size_t(tree.closest_point_and_primitive(c).second);
-    }
+    for(std::size_t j = 0; j < nf; ++j)
+      face_map[j] = std::size_t(tree.closest_point_and_primitive(face_centroids[j]).second);
   }
 
   return Result(std::move(working), preparation, edge_length, std::move(working_to_input),
-                std::move(locations), std::move(face_map), holes.filled, holes.left_open);
+                std::move(locations), std::move(face_map), holes.filled, holes.left_open, std::move(repairs));
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref

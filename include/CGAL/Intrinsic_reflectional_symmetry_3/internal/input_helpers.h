@@ -73,6 +73,14 @@ inline std::string input_lowercase_extension(const std::string& path)
   return ext;
 }
 
+// Whether the three coordinates of a point are finite (not NaN, not infinite).
+template <typename Point>
+bool input_is_finite(const Point& p)
+{
+  return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
+         std::isfinite(CGAL::to_double(p.z()));
+}
+
 // A token that strtod reads entirely as NaN or infinity ("nan", "inf", "1e999").
 inline bool input_is_non_finite_token(const std::string& token)
 {

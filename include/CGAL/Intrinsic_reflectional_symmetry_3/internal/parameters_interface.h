@@ -14,6 +14,7 @@
 CGAL_IRS_add_named_parameter(target_number_of_vertices_t, target_number_of_vertices, target_number_of_vertices)
 CGAL_IRS_add_named_parameter(isotropic_remeshing_t, isotropic_remeshing, isotropic_remeshing)
 CGAL_IRS_add_named_parameter(fill_holes_t, fill_holes, fill_holes)
+CGAL_IRS_add_named_parameter(mend_input_t, mend_input, mend_input)
 CGAL_IRS_add_named_parameter(maximum_hole_boundary_length_t, maximum_hole_boundary_length, maximum_hole_boundary_length)
 // sampling and geodesics
 CGAL_IRS_add_named_parameter(number_of_samples_t, number_of_samples, number_of_samples)

@@ -94,8 +94,9 @@
 //   --psb     also the PSB models (psb/off/ID.off) with Kim et al.'s feature points
 //             (psb/sym_gt/): one row per model, named CATEGORY_ID (human_001), and the mean CR
 //             per category; the classes with rotational orbits (octopus, table) and
-//             without ground truth (vase) are skipped, and so is a model that
-//             check_input() refuses (bearing_351, degenerate faces)
+//             without ground truth (vase) are skipped; a model that check_input()
+//             refuses is first mended by repair_input() (bearing_351, degenerate
+//             faces), as irsym --mend-input does
 //   --log-runs  one line per run (each try, and the guided run) on stderr:
 //             seed, fixed%, dist, defect and CR%, to study the retry rule
 //   --fill-holes  the pipeline runs on prepare_mesh(fill_holes(true)) of the
@@ -985,14 +986,31 @@ void run_psb(const Options& o)
       std::cout << name << ": orbits of more than two points (a rotational symmetry), no mirror pairs, skipped\n";
       continue;
     }
-    // a model that check_input() refuses is skipped, as irsym refuses it (bearing_351:
-    // 20 degenerate faces, 18 of which repair_input() cannot remove)
-    Mesh m;
-    try { IRS::read_mesh((dir / "off" / (std::to_string(id) + ".off")).string(), m); IRS::check_input(m); }
+    // a model that check_input() refuses is mended first, as irsym --mend-input does
+    // (bearing_351: 20 degenerate faces, which repair_input() removes), and skipped
+    // where the mending is not enough; the others run as given
+    Mesh input, m;
+    std::vector<std::ptrdiff_t> to_mesh;
+    try
+    {
+      IRS::read_mesh((dir / "off" / (std::to_string(id) + ".off")).string(), input);
+      to_mesh.resize(num_vertices(input));
+      std::iota(to_mesh.begin(), to_mesh.end(), std::ptrdiff_t(0));
+      try { IRS::check_input(input); m = input; }
+      catch(const IRS::Input_error& e)
+      {
+        const IRS::Input_repairs repairs = IRS::repair_input(input, m);
+        IRS::check_input(m);
+        std::cout << name << ": " << e.what() << ", mended by repair_input()\n";
+        // input vertex -> first vertex of the mended mesh that comes from it
+        to_mesh.assign(num_vertices(input), -1);
+        for(std::size_t v = 0; v < repairs.output_to_input_vertex.size(); ++v)
+          if(to_mesh[repairs.output_to_input_vertex[v]] < 0)
+            to_mesh[repairs.output_to_input_vertex[v]] = std::ptrdiff_t(v);
+      }
+    }
     catch(const IRS::Input_error& e) { std::cout << name << ": " << e.what() << ", skipped\n"; continue; }
-    std::vector<std::ptrdiff_t> as_given(num_vertices(m));
-    std::iota(as_given.begin(), as_given.end(), std::ptrdiff_t(0));
-    std::vector<std::pair<std::size_t, std::size_t>> gt = sparse_ground_truth(points, orbits, as_given);
+    std::vector<std::pair<std::size_t, std::size_t>> gt = sparse_ground_truth(points, orbits, to_mesh);
     Pipeline_result r;
     Metrics e;
     if(!run_shape(o, name, m, gt, true, e, r)) continue;

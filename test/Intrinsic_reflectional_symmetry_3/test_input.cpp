@@ -401,6 +401,28 @@ TEST(CheckInput, DegenerateFaceIsRemovedByRepair)
   EXPECT_NO_THROW(IRS::check_input(mended));
 }
 
+// a face of near-zero area whose corners are not exactly collinear (a vertex
+// 1e-12 of an edge off its opposite edge, inside the face): PMP::degenerate_faces()
+// does not see it, check_input() refuses it, and repair_input() removes it with
+// CGAL's remove_almost_degenerate_faces() (a cap), touching nothing else
+TEST(CheckInput, NearZeroAreaFaceIsRemovedByRepair)
+{
+  Mesh m = sphere<Mesh>(2);
+  const std::size_t nf = num_faces(m);
+  auto f0 = *faces(m).begin();
+  auto h = halfedge(f0, m);
+  const Point a = m.point(source(h, m)), b = m.point(target(h, m)), c = m.point(target(next(h, m), m));
+  m.point(target(next(h, m), m)) = CGAL::midpoint(a, b) + 1e-12 * (c - CGAL::midpoint(a, b));
+  ASSERT_FALSE(CGAL::Polygon_mesh_processing::is_degenerate_triangle_face(f0, m));
+  expect_error([&] { IRS::check_input(m); }, IRS::Input_problem::degenerate_face, {"near-zero area"});
+  Mesh mended;
+  const IRS::Input_repairs r = IRS::repair_input(m, mended);
+  EXPECT_EQ(r.removed_degenerate_faces, 1u);
+  EXPECT_NO_THROW(IRS::check_input(mended));
+  EXPECT_GE(num_faces(mended), nf - 2); // a flip keeps the count, a collapse removes two faces
+  EXPECT_EQ(num_faces(m), nf);
+}
+
 TEST(CheckInput, TooManySamplesIsReported)
 {
   const Mesh m = sphere<Mesh>(0); // 12 vertices

@@ -78,7 +78,7 @@ struct Input_repairs
 {
   std::size_t duplicated_non_manifold_vertices = 0; ///< new vertices created by `PMP::duplicate_non_manifold_vertices()`
   std::size_t triangulated_faces = 0;               ///< non-triangle faces split by `PMP::triangulate_faces()`
-  std::size_t removed_degenerate_faces = 0;         ///< degenerate faces eliminated by `PMP::remove_degenerate_faces()`
+  std::size_t removed_degenerate_faces = 0;         ///< degenerate faces (as `check_input()` says) eliminated by step 4 of `repair_input()`
   std::size_t removed_isolated_vertices = 0;        ///< isolated vertices left out
   /// for each vertex of the mended mesh, in iteration order, the index of the input vertex it comes from
   std::vector<std::size_t> output_to_input_vertex;
@@ -585,11 +585,16 @@ Input_report check_input(const TriangleMesh& tm, const CGAL_NP_CLASS& np = param
 /// 2. `PMP::duplicate_non_manifold_vertices()`: each extra fan at a pinched vertex gets its own vertex;
 /// 3. `PMP::triangulate_faces()`: non-triangle faces are split;
 /// 4. `PMP::remove_degenerate_faces()`: faces with collinear vertices are removed
-///    (by edge collapses and flips), then new pinched vertices, if any, are duplicated;
+///    (by edge collapses and flips); where faces that `check_input()` calls
+///    degenerate remain (collinear, or of near-zero area), then
+///    `PMP::experimental::remove_almost_degenerate_faces()` flips or collapses the
+///    caps (an angle above 170 degrees) and needles (longest edge over shortest above
+///    20) of the mesh; then new pinched vertices, if any, are duplicated;
 /// 5. `PMP::remove_isolated_vertices()`.
 ///
-/// Not mended: non-finite coordinates (step 4 is then skipped), and faces of
-/// tiny but non-zero area (they still fail `check_input()`).
+/// Not mended: non-finite coordinates (step 4 is then skipped), and the
+/// degenerate faces that neither function of step 4 can remove (they still fail
+/// `check_input()`).
 ///
 /// The vertex order of `out` is not the order of `tm`:
 /// `Input_repairs::output_to_input_vertex` maps each vertex of `out` (in
@@ -670,13 +675,31 @@ Input_repairs repair_input(const TriangleMesh& tm, OutputMesh& out,
   for(out_vertex v : vertices(out))
     finite = finite && internal::input_is_finite(get(CGAL::vertex_point, out, v));
   if(finite && CGAL::is_triangle_mesh(out)) {
-    std::vector<out_face> degenerate;
-    PMP::degenerate_faces(out, std::back_inserter(degenerate));
-    if(!degenerate.empty()) {
+    // degenerate as check_input() says: collinear corners, or a near-zero area
+    auto count_degenerate = [&out]() {
+      double total = 0;
+      for(out_face f : faces(out)) total += CGAL::to_double(PMP::face_area(f, out));
+      const double threshold = degenerate_face_relative_area * total / double((std::max)(std::size_t(1),
+                                                                             std::size_t(num_faces(out))));
+      std::size_t n = 0;
+      for(out_face f : faces(out))
+        n += PMP::is_degenerate_triangle_face(f, out) || CGAL::to_double(PMP::face_area(f, out)) <= threshold;
+      return n;
+    };
+    const std::size_t degenerate = count_degenerate();
+    if(degenerate > 0) {
       PMP::remove_degenerate_faces(out);
-      std::vector<out_face> left;
-      PMP::degenerate_faces(out, std::back_inserter(left));
-      r.removed_degenerate_faces = degenerate.size() > left.size() ? degenerate.size() - left.size() : 0;
+      // What remove_degenerate_faces() leaves (fans of collinear faces it cannot
+      // resolve, faces of near-zero area that are not exactly collinear; PSB's
+      // bearing_351: 5 and 13 of them) goes by the flips and collapses of CGAL's
+      // remove_almost_degenerate_faces() on the caps (an angle above 170 degrees)
+      // and needles (longest over shortest edge above 20) of the mesh: on
+      // bearing_351 it removes 8 of 10,380 faces and leaves none degenerate.
+      if(count_degenerate() > 0) {
+        PMP::experimental::remove_almost_degenerate_faces(out, std::cos(170. / 180. * CGAL_PI), 20., 0.);
+      }
+      const std::size_t left = count_degenerate();
+      r.removed_degenerate_faces = degenerate > left ? degenerate - left : 0;
       r.duplicated_non_manifold_vertices += duplicate();
     }
   }

@@ -12,6 +12,16 @@ function(run expected_rc)
   set(last_err "${err}" PARENT_SCOPE)
 endfunction()
 
+# the lines of the snowman's OFF file (after test 1 wrote it) as the list `off`,
+# and its vertex and face counts as `nv` and `nf`
+macro(read_snowman_off)
+  file(STRINGS ${WORK_DIR}/snowman/snowman.off off)
+  list(GET off 1 counts)
+  string(REGEX MATCHALL "[0-9]+" counts "${counts}")
+  list(GET counts 0 nv)
+  list(GET counts 1 nf)
+endmacro()
+
 # 1. the main job on a generated shape
 run(0 --shape snowman --samples 200 --seed 3 --threads 2 --out ${WORK_DIR}/snowman)
 foreach(f report.json samples.txt tau.txt transform.ply sdf.ply geodesics.ply snowman.off
@@ -160,11 +170,7 @@ endif()
 
 # 1c. a repair that is not possible (a mesh with a hole: repair needs a closed
 # mesh) is reported, exit 0, and no repaired.ply is written
-file(STRINGS ${WORK_DIR}/snowman/snowman.off off)
-list(GET off 1 counts)
-string(REGEX MATCHALL "[0-9]+" counts "${counts}")
-list(GET counts 0 nv)
-list(GET counts 1 nf)
+read_snowman_off()
 math(EXPR nf1 "${nf} - 1")
 list(REMOVE_AT off -1)
 list(REMOVE_AT off 1)
@@ -376,11 +382,7 @@ endif()
 # 3a. --mend-input: a defect repair_input() mends (here an isolated vertex, after
 # the snowman's vertices) is bad input without it, with a hint, and mended with
 # it; the outputs still have a line per input vertex and face
-file(STRINGS ${WORK_DIR}/snowman/snowman.off off)
-list(GET off 1 counts)
-string(REGEX MATCHALL "[0-9]+" counts "${counts}")
-list(GET counts 0 nv)
-list(GET counts 1 nf)
+read_snowman_off()
 math(EXPR nv1 "${nv} + 1")
 math(EXPR after_vertices "${nv} + 2")
 list(INSERT off ${after_vertices} "7 7 7")

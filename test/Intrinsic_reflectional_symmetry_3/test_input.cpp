@@ -206,13 +206,15 @@ TEST(ReadMesh, EmptyFileIsEmptyMesh)
   expect_error([&] { IRS::check_input(nothing); }, IRS::Input_problem::empty_mesh, {"0 vertices"});
 }
 
+// a square pyramid: four triangles and a quad base (face 4)
+const char* square_pyramid_off =
+  "OFF\n5 5 0\n"
+  "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n"
+  "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n4 0 3 2 1\n";
+
 TEST(CheckInput, QuadFaceIsNotATriangleMesh)
 {
-  // a square pyramid: four triangles and a quad base (face 4)
-  const std::string path = write_file("pyramid.off",
-    "OFF\n5 5 0\n"
-    "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n"
-    "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n4 0 3 2 1\n");
+  const std::string path = write_file("pyramid.off", square_pyramid_off);
   Mesh m;
   ASSERT_NO_THROW(IRS::read_mesh(path, m));
   EXPECT_EQ(num_faces(m), 5u);
@@ -1010,10 +1012,7 @@ TEST(Preparation, MendInputThenMapBack)
   EXPECT_EQ(from_polyhedron.input_repairs().duplicated_non_manifold_vertices, 1u);
 
   // a quad: triangulated, and the input's face 4 maps to a triangle of the base
-  const std::string pyramid = write_file("pyramid_mend.off",
-    "OFF\n5 5 0\n"
-    "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n"
-    "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n4 0 3 2 1\n");
+  const std::string pyramid = write_file("pyramid_mend.off", square_pyramid_off);
   Mesh pm;
   ASSERT_NO_THROW(IRS::read_mesh(pyramid, pm));
   const auto tri = IRS::prepare_mesh(pm, IRS::parameters::mend_input(true));

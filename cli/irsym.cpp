@@ -121,11 +121,12 @@ usage: irsym MESH --out DIR [options]
   --remesh             reach --target-vertices by isotropic remeshing (default: decimation
                        when reducing, remeshing when refining)
   --mend-input         first mend on a copy what repair_input() mends: pinched (non-manifold)
-                       vertices, polygons, faces with collinear vertices and isolated
-                       vertices (prepare_mesh's mend_input; SCAPE's meshes have a pinched
-                       vertex); all outputs still refer to the input's vertices and faces,
-                       report.json says what was mended ("mended"). Without it such a mesh
-                       is bad input; what mending leaves (a face of tiny area) still is
+                       vertices, polygons, degenerate faces (collinear corners or near-zero
+                       area) and isolated vertices (prepare_mesh's mend_input; SCAPE's meshes
+                       have a pinched vertex); all outputs still refer to the input's
+                       vertices and faces, report.json says what was mended ("mended") and
+                       its "input" statistics are those of the mended copy. Without it such
+                       a mesh is bad input; what the mending leaves still is
   --fill-holes         first fill every hole (boundary cycle) of the mesh with a refined and
                        faired patch (prepare_mesh's fill_holes, CGAL's hole filling); all
                        outputs still refer to the input's vertices and faces. Every boundary

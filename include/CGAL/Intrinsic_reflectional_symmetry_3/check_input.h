@@ -325,6 +325,37 @@ void read_mesh(const std::string& path, TriangleMesh& out,
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
+// Which faces check_input() calls degenerate (collinear corners, or an area at
+// most degenerate_face_relative_area times the mean), in iteration order;
+// repair_input() counts them the same way.
+struct Input_face_degeneracy
+{
+  std::vector<double> areas;
+  std::vector<char> collinear;
+  double mean_area = 0, threshold = 0;
+
+  template <typename TriangleMesh, typename NP>
+  Input_face_degeneracy(const TriangleMesh& tm, const NP& np)
+  {
+    namespace PMP = CGAL::Polygon_mesh_processing;
+    double total = 0;
+    for(auto f : faces(tm)) {
+      areas.push_back(CGAL::to_double(PMP::face_area(f, tm, np)));
+      collinear.push_back(PMP::is_degenerate_triangle_face(f, tm, np));
+      total += areas.back();
+    }
+    mean_area = areas.empty() ? 0. : total / double(areas.size());
+    threshold = degenerate_face_relative_area * total / double((std::max)(std::size_t(1), areas.size()));
+  }
+  bool degenerate(std::size_t i) const { return collinear[i] || areas[i] <= threshold; }
+  std::size_t count() const
+  {
+    std::size_t n = 0;
+    for(std::size_t i = 0; i < areas.size(); ++i) n += degenerate(i);
+    return n;
+  }
+};
+
 // Every check of check_input() except the sample count.
 template <typename TriangleMesh, typename VPM, typename VIM, typename FIM, typename GT>
 void input_check_mesh(const TriangleMesh& tm, const VPM& vpm, const VIM& vim, const FIM& fim, const GT& gt)
@@ -405,25 +436,15 @@ void input_check_mesh(const TriangleMesh& tm, const VPM& vpm, const VIM& vim, co
   // A halfedge mesh cannot hold an edge with more than two faces: that check
   // is done on the soup (check_polygon_soup(), read_mesh()).
 
-  const auto cgal_np = CGAL::parameters::vertex_point_map(vpm).geom_traits(gt);
-  std::vector<double> areas;
-  areas.reserve(nf);
-  double total = 0;
-  for(face_descriptor f : faces(tm)) {
-    const double a = CGAL::to_double(PMP::face_area(f, tm, cgal_np));
-    areas.push_back(a);
-    total += a;
-  }
-  const double threshold = degenerate_face_relative_area * total / double(nf);
+  const Input_face_degeneracy d(tm, CGAL::parameters::vertex_point_map(vpm).geom_traits(gt));
   Input_offenders degenerate;
   std::size_t i = 0;
   for(face_descriptor f : faces(tm)) {
-    const bool collinear = PMP::is_degenerate_triangle_face(f, tm, cgal_np);
-    if(collinear || areas[i] <= threshold)
+    if(d.degenerate(i))
       degenerate.add(std::size_t(get(fim, f)), [&] {
         std::ostringstream os;
-        os << "face " << get(fim, f) << (collinear ? " has collinear vertices" : " has a near-zero area")
-           << " (area " << areas[i] << ", mean face area " << total / double(nf) << ")";
+        os << "face " << get(fim, f) << (d.collinear[i] ? " has collinear vertices" : " has a near-zero area")
+           << " (area " << d.areas[i] << ", mean face area " << d.mean_area << ")";
         return os.str();
       });
     ++i;
@@ -677,14 +698,7 @@ Input_repairs repair_input(const TriangleMesh& tm, OutputMesh& out,
   if(finite && CGAL::is_triangle_mesh(out)) {
     // degenerate as check_input() says: collinear corners, or a near-zero area
     auto count_degenerate = [&out]() {
-      double total = 0;
-      for(out_face f : faces(out)) total += CGAL::to_double(PMP::face_area(f, out));
-      const double threshold = degenerate_face_relative_area * total / double((std::max)(std::size_t(1),
-                                                                             std::size_t(num_faces(out))));
-      std::size_t n = 0;
-      for(out_face f : faces(out))
-        n += PMP::is_degenerate_triangle_face(f, out) || CGAL::to_double(PMP::face_area(f, out)) <= threshold;
-      return n;
+      return internal::Input_face_degeneracy(out, CGAL::parameters::default_values()).count();
     };
     const std::size_t degenerate = count_degenerate();
     if(degenerate > 0) {

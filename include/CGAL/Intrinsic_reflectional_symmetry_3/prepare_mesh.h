@@ -410,18 +410,18 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   for(vertex_descriptor v : vertices(tm))
     points[std::size_t(get(vim, v))] = get(vpm, v);
   std::vector<Point_3> face_centroids(nf);
+  for(face_descriptor f : faces(tm)) { // the centroid of the corners (polygons too, when mended)
+    double c[3] = {0, 0, 0}, k = 0;
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
+      const Point_3& p = points[std::size_t(get(vim, target(h, tm)))];
+      c[0] += CGAL::to_double(p.x()); c[1] += CGAL::to_double(p.y()); c[2] += CGAL::to_double(p.z());
+      k += 1;
+    }
+    face_centroids[std::size_t(get(fim, f))] = Point_3(c[0] / k, c[1] / k, c[2] / k);
+  }
   Working_mesh working;
   if(mends) {
     working = std::move(mended);
-    for(face_descriptor f : faces(tm)) { // polygons too: the centroid of the corners
-      double c[3] = {0, 0, 0}, k = 0;
-      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
-        const Point_3& p = points[std::size_t(get(vim, target(h, tm)))];
-        c[0] += CGAL::to_double(p.x()); c[1] += CGAL::to_double(p.y()); c[2] += CGAL::to_double(p.z());
-        k += 1;
-      }
-      face_centroids[std::size_t(get(fim, f))] = Point_3(c[0] / k, c[1] / k, c[2] / k);
-    }
   } else {
     std::vector<std::array<std::size_t, 3> > triangles(nf);
     for(face_descriptor f : faces(tm)) {
@@ -430,9 +430,6 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
                                               std::size_t(get(vim, target(next(h, tm), tm))),
                                               std::size_t(get(vim, target(next(next(h, tm), tm), tm)))}};
     }
-    const auto centroid = gt.construct_centroid_3_object();
-    for(std::size_t j = 0; j < nf; ++j)
-      face_centroids[j] = centroid(points[triangles[j][0]], points[triangles[j][1]], points[triangles[j][2]]);
     PMP::polygon_soup_to_polygon_mesh(points, triangles, working);
   }
   const internal::Prepare_fill_outcome holes = fill_holes

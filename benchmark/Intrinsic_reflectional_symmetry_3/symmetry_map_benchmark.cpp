@@ -789,6 +789,16 @@ std::vector<std::pair<std::size_t, std::size_t>> sparse_ground_truth(const std::
   return gt;
 }
 
+// input vertex -> the first vertex of repair_input()'s mended mesh that comes
+// from it (a pinched vertex has two), -1 for an input vertex the mending dropped
+std::vector<std::ptrdiff_t> first_mended_vertex(std::size_t number_of_input_vertices, const IRS::Input_repairs& repairs)
+{
+  std::vector<std::ptrdiff_t> to_mended(number_of_input_vertices, -1);
+  for(std::size_t v = 0; v < repairs.output_to_input_vertex.size(); ++v)
+    if(to_mended[repairs.output_to_input_vertex[v]] < 0) to_mended[repairs.output_to_input_vertex[v]] = std::ptrdiff_t(v);
+  return to_mended;
+}
+
 // perturb_and_run() on one shape, then its row, its outputs (and the mesh run
 // with its ground truth where `write_mesh`) and its metrics; false if skipped
 bool run_shape(const Options& o, const std::string& name, Mesh& m, std::vector<std::pair<std::size_t, std::size_t>>& gt,
@@ -922,11 +932,8 @@ void run_scape(const Options& o)
       IRS::check_input(m);
     }
     catch(const IRS::Input_error& e) { std::cout << name << ": " << e.what() << ", skipped\n"; continue; }
-    // input vertex -> first vertex of the mended mesh that comes from it
-    std::vector<std::ptrdiff_t> to_mended(num_vertices(input), -1);
-    for(std::size_t v = 0; v < repairs.output_to_input_vertex.size(); ++v)
-      if(to_mended[repairs.output_to_input_vertex[v]] < 0) to_mended[repairs.output_to_input_vertex[v]] = std::ptrdiff_t(v);
-    std::vector<std::pair<std::size_t, std::size_t>> gt = sparse_ground_truth(points, orbits, to_mended);
+    std::vector<std::pair<std::size_t, std::size_t>> gt =
+      sparse_ground_truth(points, orbits, first_mended_vertex(num_vertices(input), repairs));
     Pipeline_result r;
     Metrics e;
     if(!run_shape(o, name, m, gt, true, e, r)) continue;
@@ -1002,11 +1009,7 @@ void run_psb(const Options& o)
         const IRS::Input_repairs repairs = IRS::repair_input(input, m);
         IRS::check_input(m);
         std::cout << name << ": " << e.what() << ", mended by repair_input()\n";
-        // input vertex -> first vertex of the mended mesh that comes from it
-        to_mesh.assign(num_vertices(input), -1);
-        for(std::size_t v = 0; v < repairs.output_to_input_vertex.size(); ++v)
-          if(to_mesh[repairs.output_to_input_vertex[v]] < 0)
-            to_mesh[repairs.output_to_input_vertex[v]] = std::ptrdiff_t(v);
+        to_mesh = first_mended_vertex(num_vertices(input), repairs);
       }
     }
     catch(const IRS::Input_error& e) { std::cout << name << ": " << e.what() << ", skipped\n"; continue; }

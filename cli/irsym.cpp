@@ -626,10 +626,19 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     if(!within_limit(1.)) throw IRS::Operation_cancelled("the " + stage + " ended after it");
   };
   const fs::path out(opt.out_dir);
-  // with --mend-input, the statistics are those of the mended copy (the input fails the check)
-  const IRS::Input_report stats = opt.mend_input
-    ? IRS::check_input(IRS::prepare_mesh(input, IRS::parameters::mend_input(true)).working_mesh())
-    : IRS::check_input(input);
+  log.start("prepare");
+  // without --remesh, prepare_mesh() decimates to a lower target and remeshes to a higher one
+  const auto fill = IRS::parameters::fill_holes(opt.fill_holes).maximum_hole_boundary_length(opt.max_hole_length)
+                      .mend_input(opt.mend_input);
+  const auto prepared = opt.target_vertices <= 0 ? IRS::prepare_mesh(input, fill)
+    : opt.remesh ? IRS::prepare_mesh(input, fill.target_number_of_vertices(std::size_t(opt.target_vertices))
+                                              .isotropic_remeshing(true))
+                 : IRS::prepare_mesh(input, fill.target_number_of_vertices(std::size_t(opt.target_vertices)));
+  const Mesh& work = prepared.working_mesh();
+  log.stop();
+  // prepare_mesh() checks the input (with --mend-input its mended copy, as the
+  // input fails the check) and keeps the statistics for report.json
+  const IRS::Input_report& stats = prepared.input_report();
   {
     irsym::Json in = irsym::Json::object();
     in.add("vertices", stats.number_of_vertices).add("faces", stats.number_of_faces)
@@ -657,16 +666,6 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     warnings.push(os.str());
   }
 
-  log.start("prepare");
-  // without --remesh, prepare_mesh() decimates to a lower target and remeshes to a higher one
-  const auto fill = IRS::parameters::fill_holes(opt.fill_holes).maximum_hole_boundary_length(opt.max_hole_length)
-                      .mend_input(opt.mend_input);
-  const auto prepared = opt.target_vertices <= 0 ? IRS::prepare_mesh(input, fill)
-    : opt.remesh ? IRS::prepare_mesh(input, fill.target_number_of_vertices(std::size_t(opt.target_vertices))
-                                              .isotropic_remeshing(true))
-                 : IRS::prepare_mesh(input, fill.target_number_of_vertices(std::size_t(opt.target_vertices)));
-  const Mesh& work = prepared.working_mesh();
-  log.stop();
   stop_if_late("preparation");
 
   log.start("geodesic oracle (" + opt.geodesics + ")");

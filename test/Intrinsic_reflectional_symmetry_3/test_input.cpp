@@ -928,6 +928,11 @@ TEST(Preparation, FillHolesThenRemeshAndClosedInputUnchanged)
   EXPECT_GT(double(report.number_of_vertices), 0.9 * 1200);
   EXPECT_LT(double(report.number_of_vertices), 1.1 * 1200);
   EXPECT_EQ(prepared.number_of_input_vertices(), num_vertices(tm));
+  // the statistics of the input, not of the filled and remeshed working mesh
+  EXPECT_EQ(prepared.input_report().number_of_boundary_cycles, 2u);
+  EXPECT_EQ(prepared.input_report().number_of_vertices, num_vertices(tm));
+  EXPECT_DOUBLE_EQ(prepared.input_report().longest_boundary_cycle_length,
+                   IRS::check_input(tm).longest_boundary_cycle_length);
 
   // the larger hole left open by the bound stays open through the remeshing
   const Mesh uneven = sphere_with_two_holes<Mesh>(0.45, 0.9);
@@ -968,6 +973,13 @@ TEST(Preparation, MendInputThenMapBack)
   const Mesh& work = prepared.working_mesh();
   ASSERT_EQ(num_vertices(work), 8u);
   ASSERT_NO_THROW(IRS::check_input(work));
+  // the statistics are the mended copy's (the input itself fails the check)
+  const IRS::Input_report mended_report = IRS::check_input(work);
+  EXPECT_EQ(prepared.input_report().number_of_vertices, 8u);
+  EXPECT_EQ(prepared.input_report().number_of_faces, mended_report.number_of_faces);
+  EXPECT_EQ(prepared.input_report().number_of_connected_components, mended_report.number_of_connected_components);
+  EXPECT_DOUBLE_EQ(prepared.input_report().area, mended_report.area);
+  EXPECT_DOUBLE_EQ(prepared.input_report().mean_edge_length, mended_report.mean_edge_length);
   ASSERT_EQ(prepared.number_of_input_vertices(), 7u);
   ASSERT_EQ(prepared.number_of_input_faces(), 8u);
   auto points_of = [](const Mesh& m) {
@@ -1040,4 +1052,10 @@ TEST(Preparation, MendInputThenMapBack)
   EXPECT_TRUE(same.is_identity());
   EXPECT_FALSE(same.input_repairs().any());
   EXPECT_EQ(num_vertices(same.working_mesh()), num_vertices(closed));
+  const IRS::Input_report closed_report = IRS::check_input(closed);
+  EXPECT_EQ(same.input_report().number_of_vertices, closed_report.number_of_vertices);
+  EXPECT_EQ(same.input_report().number_of_edges, closed_report.number_of_edges);
+  EXPECT_EQ(same.input_report().number_of_boundary_cycles, 0u);
+  EXPECT_DOUBLE_EQ(same.input_report().area, closed_report.area);
+  EXPECT_DOUBLE_EQ(same.input_report().bounding_box_diagonal, closed_report.bounding_box_diagonal);
 }

@@ -100,6 +100,10 @@ public:
   /// what `mend_input(true)` mended (`repair_input()`; nothing otherwise); its
   /// `output_to_input_vertex` is left empty, `working_to_input_vertices()` takes its place
   const Input_repairs& input_repairs() const { return input_repairs_; }
+  /// what `check_input()` returns for the input, or with `mend_input(true)` for
+  /// its mended copy where something was mended: the statistics of the mesh
+  /// the preparation starts from, so that a caller need not check it again
+  const Input_report& input_report() const { return input_report_; }
   /// the number of boundary cycles filled before any remeshing (`fill_holes(true)`)
   std::size_t number_of_filled_holes() const { return number_of_filled_holes_; }
   /// the number of boundary cycles `fill_holes(true)` left open: longer than
@@ -142,10 +146,11 @@ public:
                 std::vector<std::size_t>&& working_to_input_vertex,
                 std::vector<Input_vertex_location>&& input_vertex_locations,
                 std::vector<std::size_t>&& input_face_to_working, std::size_t number_of_filled_holes = 0,
-                std::size_t number_of_holes_left_open = 0, Input_repairs input_repairs = Input_repairs())
+                std::size_t number_of_holes_left_open = 0, Input_repairs input_repairs = Input_repairs(),
+                Input_report input_report = Input_report())
     : working_(std::move(working)), preparation_(preparation), target_edge_length_(target_edge_length),
       number_of_filled_holes_(number_of_filled_holes), number_of_holes_left_open_(number_of_holes_left_open),
-      input_repairs_(std::move(input_repairs)),
+      input_repairs_(std::move(input_repairs)), input_report_(input_report),
       working_to_input_vertex_(std::move(working_to_input_vertex)),
       input_vertex_locations_(std::move(input_vertex_locations)),
       input_face_to_working_(std::move(input_face_to_working))
@@ -158,6 +163,7 @@ private:
   double target_edge_length_ = 0;
   std::size_t number_of_filled_holes_ = 0, number_of_holes_left_open_ = 0;
   Input_repairs input_repairs_;
+  Input_report input_report_;
   std::vector<std::size_t> working_to_input_vertex_;
   std::vector<Input_vertex_location> input_vertex_locations_;
   std::vector<std::size_t> input_face_to_working_;
@@ -364,6 +370,9 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   const bool mends = repairs.any();
   if(!mends)
     internal::input_check_mesh(tm, vpm, vim, fim, gt);
+  const Input_report input_report =
+    mends ? internal::input_compute_report(mended, get(CGAL::vertex_point, mended), get(boost::face_index, mended), gt)
+          : internal::input_compute_report(tm, vpm, fim, gt);
   repairs.output_to_input_vertex.clear(); // the working mesh's own map takes its place
 
   const std::size_t nv = internal::input_count(vertices(tm)), nf = internal::input_count(faces(tm));
@@ -591,7 +600,8 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   }
 
   return Result(std::move(working), preparation, edge_length, std::move(working_to_input),
-                std::move(locations), std::move(face_map), holes.filled, holes.left_open, std::move(repairs));
+                std::move(locations), std::move(face_map), holes.filled, holes.left_open, std::move(repairs),
+                input_report);
 }
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref

@@ -185,9 +185,10 @@ outputs in DIR:
   symmetric_map.txt    the mirror partner of each input vertex, -1 for none
   curves.ply           input mesh coloured by region, curves in black
   symmetric_map.ply    input mesh coloured so that mirror partners share a colour (the
-                       position averaged over each vertex and its partner, as a rainbow
-                       along its widest span; the same for both where the map is an
-                       involution): a right map gives a mirror-symmetric picture;
+                       geodesic distances from the two ends of the top curve, averaged
+                       over each vertex and its partner, as the hue and the brightness;
+                       the same for both where the map is an involution, and alike for
+                       a part in any pose): a right map gives a mirror-symmetric picture;
                        vertices without a partner dark grey
   segmentation.txt     symmetry-aware segmentation: one segment id per input face
   segmentation.ply     input mesh, faces coloured by segment
@@ -324,12 +325,38 @@ IRS::Generated_shape<Mesh> generate(const std::string& name)
                     "bent_capsule, stick_figure, stick_figure_missing_arm)");
 }
 
+/// The colour fields of the map's picture: the geodesic distances from the
+/// two ends of the top curve (the curve vertex farthest from another, then
+/// the one farthest from it). Points on a mirror axis are fixed by the
+/// reflection, so these distances are the same at a point and at its mirror
+/// image, and being intrinsic they colour a part alike in any pose. Empty
+/// without a curve.
+template <typename Oracle>
+std::vector<std::vector<double>> axis_end_distances(const Oracle& oracle, const std::vector<IRS::Irsa_curve>& curves)
+{
+  std::vector<std::size_t> along;
+  if(!curves.empty())
+    for(const auto& pl : curves.front().polylines) along.insert(along.end(), pl.begin(), pl.end());
+  if(along.empty()) return {};
+  std::vector<float> d(oracle.number_of_vertices());
+  const auto farthest_from = [&](std::size_t source) {
+    oracle.distances_from(source, d.data());
+    return *std::max_element(along.begin(), along.end(), [&](std::size_t u, std::size_t v) { return d[u] < d[v]; });
+  };
+  const std::size_t end = farthest_from(farthest_from(along.front()));
+  std::vector<std::vector<double>> fields(1, std::vector<double>(d.begin(), d.end())); // from the first end
+  oracle.distances_from(end, d.data());
+  fields.emplace_back(d.begin(), d.end());
+  return fields;
+}
+
 /// Writes curves, regions and the symmetric map in terms of the input mesh:
 /// working vertices go to their nearest input vertex, input vertices and
 /// faces take the partner / region of their working counterpart.
 template <typename Prepared>
 void write_symmetry_outputs(const Mesh& input, const Prepared& prepared, const std::vector<IRS::Irsa_curve>& curves,
-                            const std::vector<long>& region, const std::vector<long>& partner, const fs::path& out,
+                            const std::vector<long>& region, const std::vector<long>& partner,
+                            const std::vector<std::vector<double>>& map_colour_fields, const fs::path& out,
                             const std::string& up, irsym::Json& files)
 {
   std::vector<std::vector<std::vector<std::size_t>>> pieces; // curve -> piece -> input vertex ids
@@ -377,7 +404,10 @@ void write_symmetry_outputs(const Mesh& input, const Prepared& prepared, const s
   for(const char* f : {"curves.txt", "curves.polylines.txt", "regions.txt", "symmetric_map.txt"})
     files.push(irsym::Json::object().add("file", f));
   irsym::write_picture(out, "symmetric_map", [&](const std::string& ply) {
-    return irsym::write_coloured_ply(input, irsym::partner_colours(input, partner_in), ply);
+    std::vector<std::vector<double>> fields;
+    for(const std::vector<double>& f : map_colour_fields) fields.push_back(IRS::transfer_vertex_field_to_input(prepared, f));
+    if(fields.empty()) fields = irsym::coordinate_fields(input);
+    return irsym::write_coloured_ply(input, irsym::partner_colours(partner_in, fields), ply);
   }, files, up);
 
   // picture: vertices take the region of an incident face; the curves and
@@ -783,7 +813,8 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
     t << std::setprecision(9);
     for(double x : tau_in) t << x << '\n';
   }
-  write_symmetry_outputs(input, prepared, curves, region, partner, out, opt.up, files);
+  write_symmetry_outputs(input, prepared, curves, region, partner, axis_end_distances(oracle, curves), out, opt.up,
+                         files);
   {
     const std::vector<long> segment_in = IRS::transfer_face_labels_to_input(prepared, segment);
     std::ofstream t(out / "segmentation.txt");

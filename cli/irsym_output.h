@@ -8,7 +8,6 @@
 #define IRSYM_OUTPUT_H
 
 #include <CGAL/IO/Color.h>
-#include <CGAL/Bbox_3.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -23,6 +22,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -216,60 +216,64 @@ inline CGAL::IO::Color label_colour(long label)
   return CGAL::IO::Color(k[0], k[1], k[2]);
 }
 
-/// Colours that show a vertex map: a colour field averaged over each vertex
+/// Colours that show a vertex map: colour fields averaged over each vertex
 /// and its partner, so that partners share a colour (where the map is an
 /// involution; elsewhere nearly), a right mirror map gives a mirror-symmetric
 /// picture and a part mapped wrong shows as a jump of colour; vertices
-/// without a partner are dark grey. The field: the position in the bounding
-/// box (one scale for all axes), averaged over the pair, its coordinate of
-/// widest span (over the mapped vertices, 2nd to 98th percentile) as the hue
-/// of a rainbow and the next as the brightness (the mean flattens the
-/// coordinate across the mirror).
-template <typename Point>
-std::vector<CGAL::IO::Color> partner_colours(const CGAL::Surface_mesh<Point>& mesh,
-                                             const std::vector<std::ptrdiff_t>& partner)
+/// without a partner are dark grey. Of the `fields` (one value per vertex, in
+/// one unit), the one of widest span after the averaging (over the mapped
+/// vertices, 2nd to 98th percentile) gives the hue of a rainbow and the next
+/// the brightness; a non-finite value takes the end of the scale.
+inline std::vector<CGAL::IO::Color> partner_colours(const std::vector<std::ptrdiff_t>& partner,
+                                                    const std::vector<std::vector<double>>& fields)
 {
-  using Vertex = typename CGAL::Surface_mesh<Point>::Vertex_index;
-  using Size = typename CGAL::Surface_mesh<Point>::size_type;
-  const std::size_t n = mesh.number_of_vertices();
-  const auto box = CGAL::bbox_3(mesh.points().begin(), mesh.points().end());
-  // one scale for the three axes, so that the spans compare as the shape's do
-  const double extent = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
-  const auto field = [&](std::size_t v, int axis) {
-    return extent > 0. ? (CGAL::to_double(mesh.point(Vertex(Size(v)))[axis]) - box.min(axis)) / extent : 0.5;
-  };
-  std::vector<std::array<double, 3>> mean(n);
-  std::array<std::vector<double>, 3> values;
+  const std::size_t n = partner.size(), k = fields.size();
+  std::vector<std::vector<double>> mean(k, std::vector<double>(n, 0.)), values(k);
   std::vector<char> mapped(n, 0);
-  for(std::size_t v = 0; v < n && v < partner.size(); ++v) {
+  for(std::size_t v = 0; v < n; ++v) {
     if(partner[v] < 0 || std::size_t(partner[v]) >= n) continue;
     mapped[v] = 1;
-    for(int axis = 0; axis < 3; ++axis) { // the pair's mean: the same whichever of the two is v
-      mean[v][axis] = 0.5 * (field(v, axis) + field(std::size_t(partner[v]), axis));
-      values[axis].push_back(mean[v][axis]);
+    for(std::size_t f = 0; f < k; ++f) { // the pair's mean: the same whichever of the two is v
+      mean[f][v] = 0.5 * (fields[f].at(v) + fields[f].at(std::size_t(partner[v])));
+      if(std::isfinite(mean[f][v])) values[f].push_back(mean[f][v]);
     }
   }
   // the span between the 2nd and 98th percentiles, so that a few pairs mapped
   // far apart do not flatten the colours of all the others
-  std::array<double, 3> lo = {{0., 0., 0.}}, hi = {{1., 1., 1.}};
-  for(int axis = 0; axis < 3 && !values[axis].empty(); ++axis) {
-    std::vector<double>& x = values[axis];
+  std::vector<double> lo(k, 0.), hi(k, 1.);
+  for(std::size_t f = 0; f < k; ++f) {
+    std::vector<double>& x = values[f];
+    if(x.empty()) continue;
     const std::size_t a = x.size() / 50, b = x.size() - 1 - x.size() / 50;
     std::nth_element(x.begin(), x.begin() + std::ptrdiff_t(a), x.end());
-    lo[axis] = x[a];
+    lo[f] = x[a];
     std::nth_element(x.begin(), x.begin() + std::ptrdiff_t(b), x.end());
-    hi[axis] = x[b];
+    hi[f] = x[b];
   }
-  std::array<int, 3> by_span = {{0, 1, 2}};
-  std::sort(by_span.begin(), by_span.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
-  const auto unit = [&](std::size_t v, int axis) {
-    return hi[axis] > lo[axis] ? (std::min)(1., (std::max)(0., (mean[v][axis] - lo[axis]) / (hi[axis] - lo[axis])))
-                               : 0.5;
+  std::vector<std::size_t> by_span(k);
+  std::iota(by_span.begin(), by_span.end(), std::size_t(0));
+  std::sort(by_span.begin(), by_span.end(), [&](std::size_t a, std::size_t b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
+  const auto unit = [&](std::size_t v, std::size_t f) {
+    if(std::isnan(mean[f][v])) return 1.;
+    return hi[f] > lo[f] ? (std::min)(1., (std::max)(0., (mean[f][v] - lo[f]) / (hi[f] - lo[f]))) : 0.5;
   };
   std::vector<CGAL::IO::Color> colours(n, CGAL::IO::Color(70, 70, 70));
   for(std::size_t v = 0; v < n; ++v) // hue from red (0) over yellow, green and cyan to blue (240 degrees)
-    if(mapped[v]) colours[v].set_hsv(240. * unit(v, by_span[0]), 80., 60. + 40. * unit(v, by_span[1]));
+    if(mapped[v])
+      colours[v].set_hsv(k > 0 ? 240. * unit(v, by_span[0]) : 120., 80.,
+                         60. + 40. * (k > 1 ? unit(v, by_span[1]) : 1.));
   return colours;
+}
+
+/// The three coordinates of each vertex of `mesh`, the fallback colour fields
+/// of `partner_colours()` where no intrinsic ones are at hand
+template <typename Point>
+std::vector<std::vector<double>> coordinate_fields(const CGAL::Surface_mesh<Point>& mesh)
+{
+  std::vector<std::vector<double>> fields(3);
+  for(const auto v : mesh.vertices())
+    for(int axis = 0; axis < 3; ++axis) fields[std::size_t(axis)].push_back(CGAL::to_double(mesh.point(v)[axis]));
+  return fields;
 }
 
 /// Writes `mesh` to `path` as binary PLY with a colour per vertex (same

@@ -482,7 +482,7 @@ TEST(MapPicture, PartnersShareAColour)
   const std::size_t unmapped = 0;
   const std::size_t mirror_of_unmapped = std::size_t(partner[unmapped]);
   partner[unmapped] = -1;
-  const std::vector<CGAL::IO::Color> colours = irsym::partner_colours(shape.mesh, partner);
+  const std::vector<CGAL::IO::Color> colours = irsym::partner_colours(partner, irsym::coordinate_fields(shape.mesh));
   ASSERT_EQ(colours.size(), pts.size());
   EXPECT_EQ(colours[unmapped], CGAL::IO::Color(70, 70, 70));
   std::size_t pairs = 0, same = 0;
@@ -500,7 +500,7 @@ TEST(MapPicture, PartnersShareAColour)
 
   std::vector<std::ptrdiff_t> identity(pts.size());
   std::iota(identity.begin(), identity.end(), std::ptrdiff_t(0));
-  const std::vector<CGAL::IO::Color> own = irsym::partner_colours(shape.mesh, identity);
+  const std::vector<CGAL::IO::Color> own = irsym::partner_colours(identity, irsym::coordinate_fields(shape.mesh));
   std::size_t off_plane = 0, differ = 0;
   for(std::size_t v = 0; v < pts.size(); ++v)
     if(std::abs(pts[v].x()) > 0.5) {
@@ -508,4 +508,19 @@ TEST(MapPicture, PartnersShareAColour)
       differ += own[v] != own[std::size_t(s.mirror[v])];
     }
   EXPECT_GE(double(differ), 0.95 * double(off_plane));
+
+  // irsym's intrinsic fields (distances from points of the axis) are mirror
+  // symmetric themselves: the sides look alike even under the identity, and
+  // a field infinite somewhere (another component) takes the end of the scale
+  std::vector<std::vector<double>> from_axis(2, std::vector<double>(pts.size()));
+  for(std::size_t v = 0; v < pts.size(); ++v) {
+    from_axis[0][v] = std::sqrt(CGAL::to_double(CGAL::squared_distance(pts[v], Point(0, 0, 1))));
+    from_axis[1][v] = std::sqrt(CGAL::to_double(CGAL::squared_distance(pts[v], Point(0, 1, 0))));
+  }
+  from_axis[0][0] = std::numeric_limits<double>::infinity();
+  const std::vector<CGAL::IO::Color> symmetric = irsym::partner_colours(identity, from_axis);
+  std::size_t alike = 0;
+  for(std::size_t v = 1; v < pts.size(); ++v) alike += symmetric[v] == symmetric[std::size_t(s.mirror[v])] || s.mirror[v] == 0;
+  EXPECT_GE(double(alike), 0.9 * double(pts.size() - 1));
+  EXPECT_NE(symmetric[0], CGAL::IO::Color(70, 70, 70));
 }

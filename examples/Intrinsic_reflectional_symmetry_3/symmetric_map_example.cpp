@@ -2,13 +2,14 @@
 // transform, IRSA curves, symmetric regions and the symmetric vertex map.
 // Prints the curves, for a few vertices their mirror partners, and the share
 // of the vertices that the map holds in place far from the curves. A mesh with
-// holes is first filled on a copy, and the map brought back to its vertices.
+// holes or mendable defects (pinched vertices, polygons, degenerate faces) is
+// first filled and mended on a copy, and the map brought back to its vertices.
 //
 // usage: symmetric_map_example [mesh.off [number_of_samples]]
 //        (default: a generated bent capsule, whose end-to-end symmetry is intrinsic only)
 
 #include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
-#include <CGAL/Intrinsic_reflectional_symmetry_3/check_input.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/check_input.h> // read_mesh()
 #include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
@@ -35,22 +36,17 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef Mesh::Vertex_index vertex_descriptor;
 typedef Mesh::Face_index face_descriptor;
 
-int main(int argc, char** argv)
+int run(int argc, char** argv)
 {
   Mesh input;
-  IRS::Input_report report;
-  try {
-    if(argc > 1) IRS::read_mesh(argv[1], input); // throws Input_error naming the problem
-    else input = IRS::generate_bent_capsule<Mesh>(2000).mesh;
-    report = IRS::check_input(input);
-  } catch(const IRS::Input_error& e) {
-    std::cerr << "bad input: " << e.what() << std::endl;
-    return EXIT_FAILURE;
-  }
+  if(argc > 1) IRS::read_mesh(argv[1], input); // throws Input_error naming the problem
+  else input = IRS::generate_bent_capsule<Mesh>(2000).mesh;
   // 0. holes would bend the geodesics around them: the pipeline runs on a copy
-  // whose holes are filled (CGAL's refined and faired hole filling), where the
-  // input's vertices keep their indices; a closed mesh is copied as it is
-  const auto prepared = IRS::prepare_mesh(input, IRS::parameters::fill_holes(report.number_of_boundary_cycles > 0));
+  // whose holes are filled (CGAL's refined and faired hole filling) and whose
+  // defects are mended (repair_input()); the maps lead back to the input's
+  // vertices. A valid closed mesh is copied as it is. What cannot be mended
+  // throws Input_error, naming the problem.
+  const auto prepared = IRS::prepare_mesh(input, IRS::parameters::fill_holes(true).mend_input(true));
   Mesh mesh = prepared.working_mesh();
   const std::size_t n = argc > 2 ? std::size_t(std::atoi(argv[2])) : (num_vertices(mesh) + 3) / 4;
 
@@ -105,7 +101,12 @@ int main(int argc, char** argv)
                   ? ": the map is suspect, another random_seed may do better" : "")
             << std::endl;
 
-  // 6. the map on the input's vertices (the same map when nothing was filled)
+  // 6. the map on the input's vertices (the same map when nothing was filled or mended)
+  const IRS::Input_repairs& mended = prepared.input_repairs();
+  if(mended.any())
+    std::cout << "mended first: " << mended.duplicated_non_manifold_vertices << " vertex copies at pinched vertices, "
+              << mended.triangulated_faces << " polygons triangulated, " << mended.removed_degenerate_faces
+              << " degenerate faces and " << mended.removed_isolated_vertices << " isolated vertices removed" << std::endl;
   std::vector<long> working_partners(num_vertices(mesh));
   for(vertex_descriptor v : vertices(mesh)) working_partners[std::size_t(v)] = get(partner, v);
   const std::vector<std::ptrdiff_t> input_partners = IRS::transfer_vertex_map_to_input(prepared, working_partners);
@@ -113,4 +114,14 @@ int main(int argc, char** argv)
             << std::count_if(input_partners.begin(), input_partners.end(), [](std::ptrdiff_t p) { return p >= 0; })
             << " of the " << num_vertices(input) << " input vertices with a mirror partner" << std::endl;
   return EXIT_SUCCESS;
+}
+
+int main(int argc, char** argv)
+{
+  try {
+    return run(argc, argv);
+  } catch(const IRS::Input_error& e) {
+    std::cerr << "bad input: " << e.what() << std::endl;
+    return EXIT_FAILURE;
+  }
 }

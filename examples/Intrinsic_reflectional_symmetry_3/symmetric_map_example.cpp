@@ -104,9 +104,10 @@ int run(int argc, char** argv)
   // 6. the map on the input's vertices (the same map when nothing was filled or mended)
   const IRS::Input_repairs& mended = prepared.input_repairs();
   if(mended.any())
-    std::cout << "mended first: " << mended.duplicated_non_manifold_vertices << " vertex copies at pinched vertices, "
-              << mended.triangulated_faces << " polygons triangulated, " << mended.removed_degenerate_faces
-              << " degenerate faces and " << mended.removed_isolated_vertices << " isolated vertices removed" << std::endl;
+    std::cout << "mended first: " << mended.duplicated_non_manifold_vertices
+              << " new vertex(es) splitting pinched vertices, " << mended.triangulated_faces
+              << " polygon(s) triangulated, " << mended.removed_degenerate_faces << " degenerate face(s) and "
+              << mended.removed_isolated_vertices << " isolated vertex(es) removed" << std::endl;
   std::vector<long> working_partners(num_vertices(mesh));
   for(vertex_descriptor v : vertices(mesh)) working_partners[std::size_t(v)] = get(partner, v);
   const std::vector<std::ptrdiff_t> input_partners = IRS::transfer_vertex_map_to_input(prepared, working_partners);

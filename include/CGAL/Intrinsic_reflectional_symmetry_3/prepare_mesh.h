@@ -347,7 +347,8 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   // with mend_input(true) its mended copy
   Input_repairs repairs;
   Working_mesh mended;
-  if(choose_parameter(get_parameter(np, internal_np::mend_input), false)) {
+  const bool mend = choose_parameter(get_parameter(np, internal_np::mend_input), false);
+  if(mend) {
     repairs = repair_input(tm, mended, np);
     try {
       internal::input_check_mesh(mended, get(CGAL::vertex_point, mended), get(boost::vertex_index, mended),
@@ -368,7 +369,7 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
     if(!repairs.any()) CGAL::clear(mended);
   }
   const bool mends = repairs.any();
-  if(!mends)
+  if(!mend) // with mend_input(true) the copy was checked: where nothing was mended, the same mesh
     internal::input_check_mesh(tm, vpm, vim, fim, gt);
   const Input_report input_report =
     mends ? internal::input_compute_report(mended, get(CGAL::vertex_point, mended), get(boost::face_index, mended), gt)
@@ -414,20 +415,10 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
                       "maximum_hole_boundary_length is given without fill_holes(true): no hole would be filled");
 
   // the exact copy: vertices in vertex-index order, faces in face-index order
-  // (or the mended copy); the input's points and face centroids, for the maps
+  // (or the mended copy); the input's points, also for the maps
   std::vector<Point_3> points(nv);
   for(vertex_descriptor v : vertices(tm))
     points[std::size_t(get(vim, v))] = get(vpm, v);
-  std::vector<Point_3> face_centroids(nf);
-  for(face_descriptor f : faces(tm)) { // the centroid of the corners (polygons too, when mended)
-    double c[3] = {0, 0, 0}, k = 0;
-    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
-      const Point_3& p = points[std::size_t(get(vim, target(h, tm)))];
-      c[0] += CGAL::to_double(p.x()); c[1] += CGAL::to_double(p.y()); c[2] += CGAL::to_double(p.z());
-      k += 1;
-    }
-    face_centroids[std::size_t(get(fim, f))] = Point_3(c[0] / k, c[1] / k, c[2] / k);
-  }
   Working_mesh working;
   if(mends) {
     working = std::move(mended);
@@ -595,8 +586,16 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
                      std::size_t(target(next(hf, working), working))}};
       for(std::size_t k = 0; k < 3; ++k) l.weights[k] = CGAL::to_double(loc.second[k]);
     }
-    for(std::size_t j = 0; j < nf; ++j)
-      face_map[j] = std::size_t(tree.closest_point_and_primitive(face_centroids[j]).second);
+    for(face_descriptor f : faces(tm)) { // the centroid of the corners (polygons too, when mended)
+      double c[3] = {0, 0, 0}, k = 0;
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm)) {
+        const Point_3& p = points[std::size_t(get(vim, target(h, tm)))];
+        c[0] += CGAL::to_double(p.x()); c[1] += CGAL::to_double(p.y()); c[2] += CGAL::to_double(p.z());
+        k += 1;
+      }
+      face_map[std::size_t(get(fim, f))] =
+        std::size_t(tree.closest_point_and_primitive(Point_3(c[0] / k, c[1] / k, c[2] / k)).second);
+    }
   }
 
   return Result(std::move(working), preparation, edge_length, std::move(working_to_input),

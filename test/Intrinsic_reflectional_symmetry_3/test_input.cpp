@@ -1046,6 +1046,50 @@ TEST(Preparation, MendInputThenMapBack)
                                      IRS::Input_problem::non_finite_coordinate, {"left after repair_input()"});
   EXPECT_EQ(e, 3u);
 
+  // isolated vertices, one finite and one not: mending removes them, and they
+  // lie nowhere on the working mesh (no partner, no field value, the label for
+  // none), while the tetrahedron's corners keep their own vertices
+  std::vector<Point> loose{Point(0, 0, 0), Point(1, 0, 0), Point(7, 7, 7), Point(0, 1, 0), Point(0, 0, 1),
+                           Point(std::numeric_limits<double>::quiet_NaN(), 0, 0)};
+  Mesh with_isolated;
+  std::vector<Mesh::Vertex_index> lv;
+  for(const Point& p : loose) lv.push_back(with_isolated.add_vertex(p));
+  for(const auto& f : std::vector<std::array<std::size_t, 3>>{{0, 3, 1}, {0, 1, 4}, {1, 3, 4}, {0, 4, 3}})
+    with_isolated.add_face(lv[f[0]], lv[f[1]], lv[f[2]]);
+  expect_error([&] { IRS::prepare_mesh(with_isolated); }, IRS::Input_problem::non_finite_coordinate, {"vertex 5"});
+  const auto tet = IRS::prepare_mesh(with_isolated, IRS::parameters::mend_input(true));
+  EXPECT_EQ(tet.input_repairs().removed_isolated_vertices, 2u);
+  ASSERT_EQ(tet.number_of_input_vertices(), 6u);
+  ASSERT_EQ(tet.number_of_working_vertices(), 4u);
+  std::vector<std::ptrdiff_t> tet_identity(4);
+  std::iota(tet_identity.begin(), tet_identity.end(), std::ptrdiff_t(0));
+  std::vector<double> height(4);
+  std::vector<int> tet_labels(4);
+  for(std::size_t w = 0; w < 4; ++w) {
+    height[w] = tet.working_mesh().point(Mesh::Vertex_index(Mesh::size_type(w))).z();
+    tet_labels[w] = int(w) + 10;
+  }
+  const std::vector<std::ptrdiff_t> tet_map = IRS::transfer_vertex_map_to_input(tet, tet_identity);
+  const std::vector<double> tet_height = IRS::transfer_vertex_field_to_input(tet, height);
+  const std::vector<int> tet_label = IRS::transfer_vertex_labels_to_input(tet, tet_labels, -1);
+  for(std::size_t i : {std::size_t(2), std::size_t(5)}) {
+    EXPECT_FALSE(tet.input_vertex_location(i).located) << "input vertex " << i;
+    EXPECT_EQ(tet.input_to_working_vertex(i), tet.no_vertex) << "input vertex " << i;
+    EXPECT_EQ(tet_map[i], -1) << "input vertex " << i;
+    EXPECT_TRUE(std::isnan(tet_height[i])) << "input vertex " << i;
+    EXPECT_EQ(tet_label[i], -1) << "input vertex " << i;
+  }
+  for(std::size_t i : {std::size_t(0), std::size_t(1), std::size_t(3), std::size_t(4)}) {
+    EXPECT_TRUE(tet.input_vertex_location(i).located) << "input vertex " << i;
+    const std::size_t w = tet.input_to_working_vertex(i);
+    ASSERT_LT(w, 4u);
+    EXPECT_EQ(tet.working_mesh().point(Mesh::Vertex_index(Mesh::size_type(w))), loose[i]);
+    EXPECT_EQ(tet_map[i], std::ptrdiff_t(i));
+    EXPECT_DOUBLE_EQ(tet_height[i], loose[i].z());
+    EXPECT_EQ(tet_label[i], int(w) + 10);
+  }
+  EXPECT_EQ(IRS::transfer_vertex_labels_to_input(tet, tet_labels)[2], 0); // value-initialised by default
+
   // nothing to mend: the exact copy, as without mend_input
   const Mesh closed = sphere<Mesh>(2);
   const auto same = IRS::prepare_mesh(closed, IRS::parameters::mend_input(true));

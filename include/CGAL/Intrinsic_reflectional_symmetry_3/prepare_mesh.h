@@ -61,12 +61,15 @@ enum class Mesh_preparation
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// Where an input vertex lies on the working mesh: the nearest point of the
-/// working surface, as a face and barycentric coordinates.
+/// working surface, as a face and barycentric coordinates. An input vertex on
+/// no face (isolated), which `mend_input(true)` removes, lies nowhere: it is
+/// no point of the surface, so it takes no place on it (`located` false).
 struct Input_vertex_location
 {
   std::size_t face = 0;                      ///< working face index
   std::array<std::size_t, 3> vertices{};     ///< working vertex indices of the face's corners
   std::array<double, 3> weights{};           ///< barycentric coordinates, one per entry of `vertices`
+  bool located = true;                       ///< false for a removed isolated vertex: the other members are meaningless
 };
 
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
@@ -119,10 +122,15 @@ public:
 
   /// the input vertex nearest to working vertex `w` (identity without preparation)
   std::size_t working_to_input_vertex(std::size_t w) const { return working_to_input_vertex_.at(w); }
-  /// the working vertex of largest barycentric weight in the location of input vertex `i`
+  /// returned by `input_to_working_vertex()` for an input vertex that lies nowhere
+  static constexpr std::size_t no_vertex = std::size_t(-1);
+
+  /// the working vertex of largest barycentric weight in the location of input
+  /// vertex `i`, or `no_vertex` for an isolated vertex that `mend_input(true)` removed
   std::size_t input_to_working_vertex(std::size_t i) const
   {
     const Input_vertex_location& l = input_vertex_locations_.at(i);
+    if(!l.located) return no_vertex;
     std::size_t best = 0;
     for(std::size_t k = 1; k < 3; ++k)
       if(l.weights[k] > l.weights[best]) best = k;
@@ -528,6 +536,17 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
     for(std::size_t j = 0; j < nf; ++j) face_map[j] = j;
   }
 
+  // the input vertices on a face: after mending (which removes the others,
+  // isolated), those alone have a place on the working surface; a vertex of a
+  // face is finite, or mending would have failed above
+  std::vector<char> on_face;
+  if(mends) {
+    on_face.assign(nv, 0);
+    for(face_descriptor f : faces(tm))
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
+        on_face[std::size_t(get(vim, target(h, tm)))] = 1;
+  }
+
   // working vertex -> nearest input vertex, for the vertices that are not
   // copies of input vertices (all of them after mending, remeshing or
   // decimation; then the input vertices on no face, or not finite, are left
@@ -536,12 +555,8 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
   if(first_new_vertex < nw) {
     std::vector<std::size_t> candidates;
     if(mends) {
-      std::vector<char> on_face(nv, 0);
-      for(face_descriptor f : faces(tm))
-        for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
-          on_face[std::size_t(get(vim, target(h, tm)))] = 1;
       for(std::size_t i = 0; i < nv; ++i)
-        if(on_face[i] && internal::input_is_finite(points[i])) candidates.push_back(i);
+        if(on_face[i]) candidates.push_back(i);
     } else {
       candidates.resize(nv);
       std::iota(candidates.begin(), candidates.end(), std::size_t(0));
@@ -571,11 +586,8 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
     PMP::build_AABB_tree(working, tree);
     tree.accelerate_distance_queries();
     for(std::size_t i = 0; i < nv; ++i) {
-      if(!internal::input_is_finite(points[i])) { // an isolated vertex that mending removed: weights 0
-        const auto hf = halfedge(*faces(working).begin(), working);
-        locations[i].face = std::size_t(*faces(working).begin());
-        locations[i].vertices = {{std::size_t(source(hf, working)), std::size_t(target(hf, working)),
-                                  std::size_t(target(next(hf, working), working))}};
+      if(!on_face.empty() && !on_face[i]) { // an isolated vertex that mending removed: no point of the surface
+        locations[i].located = false;
         continue;
       }
       const auto loc = PMP::locate_with_AABB_tree(points[i], tree, working);
@@ -608,7 +620,8 @@ prepare_mesh(const TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::defau
 /// vertices by barycentric interpolation at their locations on the working
 /// mesh. Exact for fields that are linear on the working faces; a copy
 /// without preparation. Infinite values propagate (a zero weight does not
-/// turn an infinite value into NaN).
+/// turn an infinite value into NaN). An input vertex that lies nowhere (an
+/// isolated vertex that `mend_input(true)` removed) gets NaN.
 ///
 /// \tparam WorkingValues a random access range of numbers, indexed by working vertex index
 /// \returns the field on the input vertices, in input vertex index order
@@ -622,6 +635,10 @@ std::vector<double> transfer_vertex_field_to_input(const Prepared_mesh<GeomTrait
   std::vector<double> out(prepared.number_of_input_vertices());
   for(std::size_t i = 0; i < out.size(); ++i) {
     const Input_vertex_location& l = prepared.input_vertex_location(i);
+    if(!l.located) {
+      out[i] = std::numeric_limits<double>::quiet_NaN();
+      continue;
+    }
     double value = 0;
     for(std::size_t k = 0; k < 3; ++k)
       if(l.weights[k] != 0)
@@ -634,21 +651,26 @@ std::vector<double> transfer_vertex_field_to_input(const Prepared_mesh<GeomTrait
 /// \ingroup PkgIntrinsicReflectionalSymmetry3Ref
 /// Transfers per-vertex labels (any copyable type) of the working mesh to the
 /// input's vertices: each input vertex takes the label of
-/// `prepared.input_to_working_vertex(i)`.
+/// `prepared.input_to_working_vertex(i)`, and an input vertex that lies nowhere
+/// (an isolated vertex that `mend_input(true)` removed) takes `no_label`.
 ///
 /// \tparam WorkingLabels a random access range, indexed by working vertex index
 /// \returns the labels of the input vertices, in input vertex index order
 /// \throws Input_error `invalid_parameter` if `working_labels` has fewer entries than working vertices
 template <typename GeomTraits, typename WorkingLabels>
 std::vector<typename boost::range_value<WorkingLabels>::type>
-transfer_vertex_labels_to_input(const Prepared_mesh<GeomTraits>& prepared, const WorkingLabels& working_labels)
+transfer_vertex_labels_to_input(const Prepared_mesh<GeomTraits>& prepared, const WorkingLabels& working_labels,
+                                const typename boost::range_value<WorkingLabels>::type& no_label =
+                                  typename boost::range_value<WorkingLabels>::type())
 {
   internal::prepare_check_size(std::size_t(boost::size(working_labels)), prepared.number_of_working_vertices(),
                                "working vertex labels");
   std::vector<typename boost::range_value<WorkingLabels>::type> out;
   out.reserve(prepared.number_of_input_vertices());
-  for(std::size_t i = 0; i < prepared.number_of_input_vertices(); ++i)
-    out.push_back(working_labels[prepared.input_to_working_vertex(i)]);
+  for(std::size_t i = 0; i < prepared.number_of_input_vertices(); ++i) {
+    const std::size_t w = prepared.input_to_working_vertex(i);
+    out.push_back(w == Prepared_mesh<GeomTraits>::no_vertex ? no_label : working_labels[w]);
+  }
   return out;
 }
 
@@ -656,7 +678,9 @@ transfer_vertex_labels_to_input(const Prepared_mesh<GeomTraits>& prepared, const
 /// Transfers a map from working vertices to working vertices (for example the
 /// partners of `symmetric_vertex_map()`, negative for none) to the input: input
 /// vertex `i` takes the partner of `prepared.input_to_working_vertex(i)`, as the
-/// input vertex nearest to it (`prepared.working_to_input_vertex()`), or -1.
+/// input vertex nearest to it (`prepared.working_to_input_vertex()`), or -1
+/// (also for an input vertex that lies nowhere: an isolated vertex that
+/// `mend_input(true)` removed).
 ///
 /// \tparam WorkingPartners a random access range of signed integers, indexed by working vertex index
 /// \returns the partner of each input vertex, in input vertex index order
@@ -670,7 +694,9 @@ std::vector<std::ptrdiff_t> transfer_vertex_map_to_input(const Prepared_mesh<Geo
                                "working vertex partners");
   std::vector<std::ptrdiff_t> out(prepared.number_of_input_vertices(), -1);
   for(std::size_t i = 0; i < out.size(); ++i) {
-    const long long w = (long long)working_partners[prepared.input_to_working_vertex(i)];
+    const std::size_t at = prepared.input_to_working_vertex(i);
+    if(at == Prepared_mesh<GeomTraits>::no_vertex) continue;
+    const long long w = (long long)working_partners[at];
     if(w < 0) continue;
     if(std::size_t(w) >= prepared.number_of_working_vertices()) {
       std::ostringstream os;

@@ -173,7 +173,8 @@ outputs in DIR:
                        results.guided: whether that run is the guided one (see --tries),
                        results.whole_shape_reflection: whether its map is the global one
   samples.txt          the samples, as input vertex ids (one per line)
-  tau.txt              the IRSA transform, one value per input vertex (input order)
+  tau.txt              the IRSA transform, one value per input vertex (input order;
+                       nan for an isolated vertex that --mend-input removed)
   transform.ply        input mesh coloured by the IRSA transform (vertex scalar 'transform')
   sdf.ply              input mesh coloured by the shape diameter function (SDF)
   geodesics.ply        input mesh coloured by the geodesic distance from the first sample
@@ -182,7 +183,8 @@ outputs in DIR:
   curves.polylines.txt the same curves in CGAL's polylines format (one line per piece:
                        number of points, then x y z of each; closed pieces repeat the first)
   regions.txt          the symmetric region (curve index) of each input face, -1 for none
-  symmetric_map.txt    the mirror partner of each input vertex, -1 for none
+  symmetric_map.txt    the mirror partner of each input vertex, -1 for none (and for
+                       an isolated vertex that --mend-input removed)
   curves.ply           input mesh coloured by region, curves in black
   symmetric_map.ply    input mesh coloured so that mirror partners share a colour (the
                        geodesic distances from the two ends of the top curve, averaged

@@ -411,6 +411,15 @@ if(NOT n_mapped EQUAL nv1 OR NOT n_regions EQUAL nf)
   message(FATAL_ERROR "--mend-input: ${n_mapped} map lines for ${nv1} input vertices, ${n_regions} region lines "
                       "for ${nf} input faces")
 endif()
+# the removed vertex lies nowhere on the working mesh: no partner, no transform value
+file(STRINGS ${WORK_DIR}/mended/tau.txt tau)
+list(GET mapped ${nv} isolated_partner)
+list(GET tau ${nv} isolated_tau)
+list(GET mapped 0 first_partner)
+if(NOT isolated_partner STREQUAL "-1" OR NOT isolated_tau STREQUAL "nan" OR first_partner STREQUAL "-1")
+  message(FATAL_ERROR "--mend-input: the removed isolated vertex ${nv} has partner '${isolated_partner}' and "
+                      "transform '${isolated_tau}' (expected -1 and nan); vertex 0 has partner '${first_partner}'")
+endif()
 
 # 3b. a time limit that has already passed stops the run (exit 4) once the first stage ends, with a message
 run(4 --shape snowman --samples 200 --time-limit 0.000001 --out ${WORK_DIR}/limited)

@@ -16,6 +16,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/symmetric_map.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/symmetry_detection.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -57,25 +58,9 @@ namespace {
 // What one seed of the samples gives, from the samples to the symmetric map;
 // --tries keeps the first run whose map is not suspect, or else the one of
 // least symmetric_map_defect()
-struct Seed_run
-{
-  unsigned seed = 0;
-  std::vector<std::size_t> samples;
-  IRS::Geodesic_distance_matrix D;
-  std::size_t similar_pairs = 0;
-  IRS::Irsa_voting_result voting;
-  std::vector<double> tau;
-  std::vector<IRS::Irsa_curve> curves;
-  std::vector<long> region, partner;
-  std::size_t region_faces = 0, mapped_vertices = 0;
-  double fixed_share = 0., distortion = 0.;
-  double reversing_share = 0.; // orientation_reversing_share() of the map
-  bool guided = false; // voted by the pairs that the global reflection swaps
-  bool whole_shape = false; // its map is that reflection, its first curve's region the whole shape
-  double global_reversing_share = -1.; // orientation_reversing_share() of that reflection (guided runs)
-  bool global_refined = false; // that reflection refined over the whole mesh (refine_symmetric_map())
-  bool suspect() const { return IRS::is_suspect_symmetric_map(fixed_share, distortion); }
-};
+// one run of the pipeline (the package's, as detect_reflectional_symmetry() runs it):
+// everything it makes, which irsym writes out
+using Seed_run = IRS::internal::Detection_run_data;
 
 const char* usage_text =
 R"(irsym - partial intrinsic reflectional symmetry of a closed triangle mesh
@@ -523,7 +508,9 @@ irsym::Json mended_json(const IRS::Input_repairs& r)
 }
 
 // the stages that depend on the seed: samples, geodesic matrix, signatures,
-// voting, curves, regions and map; stage names carry the seed after the first try
+// voting, curves, regions and map (internal::detection_run(), the package's
+// run of detect_reflectional_symmetry()), each logged and timed; stage names
+// carry the seed after the first try
 template <typename Oracle>
 Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, const std::vector<double>& vertex_sdf,
                   const std::vector<double>& areas, unsigned seed, const std::function<bool(double)>& within_limit,
@@ -533,115 +520,45 @@ Seed_run run_seed(const Options& opt, const Mesh& work, const Oracle& oracle, co
   const std::string suffix = guided_by != nullptr ? " (seed " + std::to_string(seed) + ", guided)"
                              : seed == opt.seed   ? ""
                                                   : " (seed " + std::to_string(seed) + ")";
-  Seed_run r;
-  r.seed = seed;
-  if(guided_by != nullptr)
-  {
-    // the samples and distances of the run it follows; the global
-    // reflection decides which of their pairs vote
-    r.samples = guided_by->samples;
-    r.D = guided_by->D;
-    r.guided = true;
-  }
-  else
-  {
-    log.start("sampling" + suffix);
-    r.samples = opt.samples
-      ? IRS::farthest_point_samples(work, IRS::parameters::number_of_samples(std::size_t(*opt.samples)).random_seed(seed))
-      : IRS::farthest_point_samples(work, IRS::parameters::random_seed(seed));
-    log.stop();
-
-    log.start("geodesic matrix" + suffix);
-    r.D = IRS::compute_geodesic_distance_matrix(oracle, r.samples, IRS::parameters::callback(within_limit));
-    log.stop();
-  }
-
-  log.start("signatures" + suffix);
-  const IRS::Sdf_signatures signatures = IRS::sdf_signatures(vertex_sdf, areas, r.D);
-  std::vector<std::pair<std::size_t, std::size_t>> similar;
-  IRS::similar_sample_pairs(signatures, std::back_inserter(similar),
-                            IRS::parameters::maximum_similar_pairs_per_sample(opt.max_similar_per_sample).random_seed(seed));
-  if(guided_by != nullptr && global_map != nullptr)
-  {
-    std::vector<std::pair<std::size_t, std::size_t>> swapped;
-    IRS::pairs_consistent_with_map(
-      work, r.D, boost::make_iterator_property_map(global_map->begin(), get(boost::vertex_index, work)), similar,
-      std::back_inserter(swapped));
-    similar.swap(swapped);
-  }
-  r.similar_pairs = similar.size();
-  log.stop();
-
-  log.start("IRSA transform (voting)" + suffix);
-  // the voting's cost grows with its pairs times the similar pairs: a hint
-  // where that many is unusual (PSB's table 156 at 1,000 samples: 159,402
-  // similar pairs without the cap, 22 s on two cores; typical meshes: a few
-  // thousand to 60,000)
-  const std::size_t many_similar_pairs = 100000;
-  if(opt.max_voting_pairs == 0 && similar.size() > many_similar_pairs)
-    std::cerr << "[irsym] " << similar.size() << " of " << r.samples.size() * (r.samples.size() - 1) / 2
-              << " sample pairs are kept by the similarity filter (a nearly uniform SDF): the voting may take minutes;"
-                 " --max-similar-pairs-per-sample K keeps fewer of them, --max-voting-pairs N lets only N vote\n";
-  r.tau.assign(num_vertices(work), 0.);
+  using Stage = IRS::internal::Detection_stage;
+  const auto observe = [&](Stage stage, bool begins, const Seed_run& r) {
+    if(!begins) { log.stop(); return; }
+    switch(stage) {
+      case Stage::sampling: log.start("sampling" + suffix); break;
+      case Stage::geodesic_matrix: log.start("geodesic matrix" + suffix); break;
+      case Stage::signatures: log.start("signatures" + suffix); break;
+      case Stage::voting:
+      {
+        log.start("IRSA transform (voting)" + suffix);
+        // the voting's cost grows with its pairs times the similar pairs: a hint
+        // where that many is unusual (PSB's table 156 at 1,000 samples: 159,402
+        // similar pairs without the cap, 22 s on two cores; typical meshes: a few
+        // thousand to 60,000)
+        const std::size_t many_similar_pairs = 100000;
+        if(opt.max_voting_pairs == 0 && r.similar_pairs > many_similar_pairs)
+          std::cerr << "[irsym] " << r.similar_pairs << " of " << r.samples.size() * (r.samples.size() - 1) / 2
+                    << " sample pairs are kept by the similarity filter (a nearly uniform SDF): the voting may take "
+                       "minutes; --max-similar-pairs-per-sample K keeps fewer of them, --max-voting-pairs N lets only "
+                       "N vote\n";
+        break;
+      }
+      case Stage::curves: log.start("IRSA curves" + suffix); break;
+      case Stage::regions_and_map: log.start("symmetric regions and map" + suffix); break;
+    }
+  };
   const std::size_t cap = opt.max_voting_pairs > 0 ? std::size_t(opt.max_voting_pairs)
                                                    : std::numeric_limits<std::size_t>::max(); // the default: no cap
-  r.voting = IRS::compute_irsa_transform(
-    work, r.D, similar, boost::make_iterator_property_map(r.tau.begin(), get(boost::vertex_index, work)),
-    IRS::parameters::random_seed(seed).maximum_number_of_voting_pairs(cap).callback(within_limit));
-  log.stop();
-
-  log.start("IRSA curves" + suffix);
-  IRS::extract_irsa_curves(work, r.D, r.voting,
-                           boost::make_iterator_property_map(r.tau.begin(), get(boost::vertex_index, work)),
-                           std::back_inserter(r.curves),
-                           IRS::parameters::nested_symmetries(opt.nested).callback(within_limit));
-  log.stop();
-
-  log.start("symmetric regions and map" + suffix);
-  r.region.assign(num_faces(work), -1);
-  r.partner.assign(num_vertices(work), -1);
-  r.region_faces = IRS::symmetric_regions(
-    work, r.D, r.curves, boost::make_iterator_property_map(r.region.begin(), get(boost::face_index, work)),
-    IRS::parameters::callback(within_limit));
-  std::vector<long> map_region(num_vertices(work), -1);
-  const auto partner_map = boost::make_iterator_property_map(r.partner.begin(), get(boost::vertex_index, work));
-  const auto map_region_map = boost::make_iterator_property_map(map_region.begin(), get(boost::vertex_index, work));
-  if(guided_by != nullptr && global_map != nullptr)
-    r.mapped_vertices = IRS::symmetric_vertex_map(
-      work, r.D, r.curves, partner_map,
-      IRS::parameters::callback(within_limit).vertex_region_map(map_region_map).initial_vertex_map(
-        boost::make_iterator_property_map(global_map->begin(), get(boost::vertex_index, work))));
-  else
-    r.mapped_vertices = IRS::symmetric_vertex_map(
-      work, r.D, r.curves, partner_map, IRS::parameters::callback(within_limit).vertex_region_map(map_region_map));
-  // a reflection fixes its axis alone and preserves distances: a map that
-  // keeps parts far from the curves in place (a limb onto itself) or sends a
-  // part by another symmetry is suspect
-  r.fixed_share = IRS::fixed_point_share(work, r.curves, partner_map);
-  r.distortion = IRS::isometric_distortion(work, partner_map, IRS::parameters::vertex_region_map(map_region_map));
-  if(guided_by != nullptr && global_map != nullptr)
-  {
-    // the reflection itself over the whole shape where it is the better map
-    // (takes_whole_shape_reflection()), refined over the whole mesh where
-    // that lowers its defect (refine_symmetric_map())
-    const IRS::internal::Whole_shape_reflection w = IRS::internal::prefer_whole_shape_reflection(
-      work, r.curves, r.samples, *global_map, r.partner, r.fixed_share, r.distortion);
-    r.global_refined = w.refined;
-    r.global_reversing_share = w.reversing_share;
-    r.whole_shape = w.taken;
-    if(w.taken)
-    {
-      for(long& f : r.region) f = 0; // the first curve's region: the whole shape
-      r.region_faces = r.region.size();
-      r.mapped_vertices = std::size_t(std::count_if(r.partner.begin(), r.partner.end(), [](long p) { return p >= 0; }));
-      r.reversing_share = w.reversing_share;
-    }
-  }
-  if(!r.whole_shape)
-    r.reversing_share = IRS::orientation_reversing_share(
-      work, boost::make_iterator_property_map(r.partner.begin(), get(boost::vertex_index, work)));
-  log.stop();
-  return r;
+  const auto np = IRS::parameters::callback(within_limit)
+                    .maximum_similar_pairs_per_sample(opt.max_similar_per_sample)
+                    .maximum_number_of_voting_pairs(cap)
+                    .nested_symmetries(opt.nested);
+  // without --samples, the package's default number
+  return opt.samples
+    ? IRS::internal::detection_run<CGAL::Parallel_if_available_tag>(
+        work, oracle, vertex_sdf, areas, seed, np.number_of_samples(std::size_t(*opt.samples)), guided_by,
+        global_map, observe)
+    : IRS::internal::detection_run<CGAL::Parallel_if_available_tag>(work, oracle, vertex_sdf, areas, seed, np,
+                                                                    guided_by, global_map, observe);
 }
 
 template <typename Oracle>

@@ -1,23 +1,20 @@
-// The whole pipeline on one mesh: samples, geodesics, signatures, IRSA
-// transform, IRSA curves, symmetric regions and the symmetric vertex map.
-// Prints the curves, for a few vertices their mirror partners, and the share
-// of the vertices that the map holds in place far from the curves. A mesh with
-// holes or mendable defects (pinched vertices, polygons, degenerate faces) is
-// first filled and mended on a copy, and the map brought back to its vertices.
+// The whole pipeline on one mesh in one call, detect_reflectional_symmetry():
+// samples, geodesics, signatures, IRSA transform, IRSA curves, symmetric
+// regions and the symmetric vertex map, run again with the next seed while the
+// map is suspect (it holds parts far from the curves in place, or does not
+// preserve distances), as irsym does. Prints the curves, for a few vertices
+// their mirror partners, and what each run found. A mesh with holes or
+// mendable defects (pinched vertices, polygons, degenerate faces) is first
+// filled and mended on a copy, and the map brought back to its vertices.
+// Each stage is also a free function of its own (see the manual's pipeline).
 //
 // usage: symmetric_map_example [mesh.off [number_of_samples]]
 //        (default: a generated bent capsule, whose end-to-end symmetry is intrinsic only)
 
-#include <CGAL/Intrinsic_reflectional_symmetry_3/Heat_method_geodesic_oracle.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/check_input.h> // read_mesh()
-#include <CGAL/Intrinsic_reflectional_symmetry_3/geodesic_distances.h>
-#include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_curves.h>
-#include <CGAL/Intrinsic_reflectional_symmetry_3/irsa_transform.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/prepare_mesh.h>
-#include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
-#include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
-#include <CGAL/Intrinsic_reflectional_symmetry_3/symmetric_map.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/symmetry_detection.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -26,8 +23,6 @@
 #include <cstddef>
 #include <cstdlib>
 #include <iostream>
-#include <iterator>
-#include <utility>
 #include <vector>
 
 namespace IRS = CGAL::Intrinsic_reflectional_symmetry_3;
@@ -50,58 +45,41 @@ int run(int argc, char** argv)
   Mesh mesh = prepared.working_mesh();
   const std::size_t n = argc > 2 ? std::size_t(std::atoi(argv[2])) : (num_vertices(mesh) + 3) / 4;
 
-  // 1. samples and the sample-to-vertex geodesic distance matrix
-  const std::vector<std::size_t> samples =
-    IRS::farthest_point_samples(mesh, IRS::parameters::number_of_samples(n).random_seed(0u));
-  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(mesh);
-  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
-
-  // 2. the similarity filter on SDF map signatures
-  const IRS::Sdf_signatures signatures = IRS::compute_sdf_signatures(mesh, D);
-  std::vector<std::pair<std::size_t, std::size_t>> similar;
-  IRS::similar_sample_pairs(signatures, std::back_inserter(similar));
-
-  // 3. the IRSA transform, into a vertex property map
-  auto tau = mesh.add_property_map<vertex_descriptor, double>("v:tau", 0.).first;
-  const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(mesh, D, similar, tau);
-
-  // 4. the curves, their regions and the mirror map
-  std::vector<IRS::Irsa_curve> curves;
-  IRS::extract_irsa_curves(mesh, D, voting, tau, std::back_inserter(curves));
-  auto region = mesh.add_property_map<face_descriptor, int>("f:region", -1).first;
+  // 1. the pipeline, into property maps: the mirror partner of each vertex,
+  // the IRSA transform and each face's symmetric region
   auto partner = mesh.add_property_map<vertex_descriptor, long>("v:partner", -1).first;
-  const std::size_t in_regions = IRS::symmetric_regions(mesh, D, curves, region);
-  // map_region: which curve's reflection gives each vertex its partner
-  auto map_region = mesh.add_property_map<vertex_descriptor, int>("v:map_region", -1).first;
-  const std::size_t mapped =
-    IRS::symmetric_vertex_map(mesh, D, curves, partner, IRS::parameters::vertex_region_map(map_region));
+  auto tau = mesh.add_property_map<vertex_descriptor, double>("v:tau", 0.).first;
+  auto region = mesh.add_property_map<face_descriptor, int>("f:region", -1).first;
+  const IRS::Reflectional_symmetry symmetry = IRS::detect_reflectional_symmetry(
+    mesh, partner,
+    IRS::parameters::number_of_samples(n).random_seed(0u).irsa_transform_map(tau).face_region_map(region));
 
-  std::cout << num_vertices(mesh) << " vertices, " << samples.size() << " samples, " << similar.size()
-            << " similar pairs, " << curves.size() << " IRSA curve(s)" << std::endl;
-  for(std::size_t c = 0; c < curves.size(); ++c)
-    std::cout << "  curve " << c << ": " << curves[c].vertices().size() << " vertices in "
-              << curves[c].polylines.size() << " piece(s), nu = " << curves[c].nu << std::endl;
-  std::cout << in_regions << " of " << num_faces(mesh) << " faces in a symmetric region, " << mapped
-            << " vertices with a mirror partner" << std::endl;
-  for(std::size_t i = 0; i < 5 && i < samples.size(); ++i) {
-    const vertex_descriptor v(Mesh::size_type(samples[i]));
-    std::cout << "  vertex " << std::size_t(v) << " <-> " << get(partner, v) << std::endl;
+  // 2. what it found
+  const IRS::Symmetry_detection_run& kept = symmetry.kept();
+  std::cout << num_vertices(mesh) << " vertices, " << symmetry.samples.size() << " samples, " << kept.similar_pairs
+            << " similar pairs, " << symmetry.curves.size() << " IRSA curve(s)" << std::endl;
+  for(std::size_t c = 0; c < symmetry.curves.size(); ++c)
+    std::cout << "  curve " << c << ": " << symmetry.curves[c].vertices().size() << " vertices in "
+              << symmetry.curves[c].polylines.size() << " piece(s), nu = " << symmetry.curves[c].nu << std::endl;
+  std::cout << kept.region_faces << " of " << num_faces(mesh) << " faces in a symmetric region, "
+            << kept.mapped_vertices << " vertices with a mirror partner" << std::endl;
+  for(std::size_t i = 0; i < 5 && i < symmetry.samples.size(); ++i) {
+    const vertex_descriptor v(Mesh::size_type(symmetry.samples[i]));
+    std::cout << "  vertex " << std::size_t(v) << " <-> " << get(partner, v) << ", tau " << get(tau, v) << std::endl;
   }
 
-  // 5. checks that need no ground truth: a reflection fixes its axis alone
+  // 3. checks that need no ground truth: a reflection fixes its axis alone
   // and preserves distances, so a map that holds parts far from the curves in
   // place (a limb onto itself) or sends a part by another symmetry is
-  // suspect; irsym --tries then runs again with the next seeds
-  const double fixed = IRS::fixed_point_share(mesh, curves, partner);
-  const double distortion =
-    IRS::isometric_distortion(mesh, partner, IRS::parameters::vertex_region_map(map_region));
-  std::cout << 100. * fixed << " % of the vertices far from the curves are (nearly) their own partner; the map "
-            << "changes the distances between landmarks by " << distortion << " sqrt(area) on average"
-            << (IRS::is_suspect_symmetric_map(fixed, distortion)
-                  ? ": the map is suspect, another random_seed may do better" : "")
-            << std::endl;
+  // suspect, and the next seed runs
+  for(const IRS::Symmetry_detection_run& run : symmetry.runs)
+    std::cout << "  run of seed " << run.seed << (run.guided ? " (guided by the global reflection)" : "") << ": "
+              << 100. * run.fixed_share << " % of the vertices far from the curves (nearly) their own partner, "
+              << "distances between landmarks changed by " << run.distortion << " sqrt(area) on average, "
+              << run.seconds << " s" << (run.suspect() ? ", suspect" : "") << std::endl;
+  if(kept.suspect()) std::cout << "the map kept is suspect: another random_seed may do better" << std::endl;
 
-  // 6. the map on the input's vertices (the same map when nothing was filled or mended)
+  // 4. the map on the input's vertices (the same map when nothing was filled or mended)
   const IRS::Input_repairs& mended = prepared.input_repairs();
   if(mended.any())
     std::cout << "mended first: " << mended.duplicated_non_manifold_vertices

@@ -30,6 +30,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/shape_generators.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/symmetric_map.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/symmetry_detection.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_extraction.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/curves_level_set.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/perturbed_copies.h>
@@ -2440,4 +2441,199 @@ TEST(Curves, BadInputThrowsInputError)
   auto pm = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), shape.mesh);
   EXPECT_EQ(IRS::symmetric_vertex_map(shape.mesh, p.D, out, pm), 0u);
   for(auto v : vertices(shape.mesh)) EXPECT_EQ(get(pm, v), -1);
+}
+
+// ---------------------------------------------------------------- the whole pipeline in one call
+
+namespace {
+
+// detect_reflectional_symmetry()'s outputs, by vertex and face index
+template <typename TM>
+struct Detection
+{
+  IRS::Reflectional_symmetry result;
+  std::vector<std::ptrdiff_t> partner;
+  std::vector<double> tau;
+  std::vector<int> region;
+
+  template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename NP>
+  void run(const TM& tm, const NP& np)
+  {
+    auto pmap = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), tm);
+    auto tmap = get(CGAL::dynamic_vertex_property_t<double>(), tm);
+    auto rmap = get(CGAL::dynamic_face_property_t<int>(), tm);
+    result = IRS::detect_reflectional_symmetry<ConcurrencyTag>(tm, pmap, np.irsa_transform_map(tmap).face_region_map(rmap));
+    auto vim = CGAL::get_initialized_vertex_index_map(tm);
+    auto fim = CGAL::get_initialized_face_index_map(tm);
+    partner.assign(num_vertices(tm), -2);
+    tau.assign(num_vertices(tm), -1.);
+    region.assign(num_faces(tm), -2);
+    for(auto v : vertices(tm)) { partner[get(vim, v)] = get(pmap, v); tau[get(vim, v)] = get(tmap, v); }
+    for(auto f : faces(tm)) region[get(fim, f)] = get(rmap, f);
+  }
+};
+
+} // namespace
+
+// Where the first run's map holds, the one call is the stages called one by
+// one with the same seed and parameters (the literal composition), and its
+// map follows the bent capsule's intrinsic end-to-end mirror
+TEST(Detection, OneCallIsTheStagesWhereTheFirstMapHolds)
+{
+  const auto shape = IRS::generate_bent_capsule<Mesh>(1500);
+  const Mesh& m = shape.mesh;
+  // a seeded sample of the voting pairs keeps the test fast (as Pipeline::run)
+  const auto np = IRS::parameters::number_of_samples(std::size_t(400)).random_seed(1u)
+                    .maximum_number_of_voting_pairs(std::size_t(3000));
+  Detection<Mesh> d;
+  d.run(m, np);
+  ASSERT_EQ(d.result.runs.size(), 1u);
+  EXPECT_EQ(d.result.kept_run, 0u);
+  const IRS::Symmetry_detection_run& run = d.result.kept();
+  EXPECT_FALSE(run.suspect());
+  EXPECT_FALSE(run.guided);
+  EXPECT_EQ(run.seed, 1u);
+  EXPECT_FALSE(d.result.stopped);
+
+  // the stages
+  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+  const std::vector<std::size_t> samples = IRS::farthest_point_samples(m, np);
+  EXPECT_EQ(samples, d.result.samples);
+  const IRS::Geodesic_distance_matrix D = IRS::compute_geodesic_distance_matrix(oracle, samples);
+  const IRS::Sdf_signatures sig = IRS::sdf_signatures(IRS::vertex_sdf_values(m), IRS::vertex_areas(m), D);
+  Pairs similar;
+  IRS::similar_sample_pairs(sig, std::back_inserter(similar), np);
+  EXPECT_EQ(similar.size(), run.similar_pairs);
+  auto tau = get(CGAL::dynamic_vertex_property_t<double>(), m);
+  const IRS::Irsa_voting_result voting = IRS::compute_irsa_transform(m, D, similar, tau, np);
+  std::vector<IRS::Irsa_curve> curves;
+  IRS::extract_irsa_curves(m, D, voting, tau, std::back_inserter(curves));
+  auto region = get(CGAL::dynamic_face_property_t<int>(), m);
+  EXPECT_EQ(IRS::symmetric_regions(m, D, curves, region), run.region_faces);
+  auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
+  EXPECT_EQ(IRS::symmetric_vertex_map(m, D, curves, partner), run.mapped_vertices);
+  ASSERT_EQ(curves.size(), d.result.curves.size());
+  EXPECT_EQ(curves.size(), run.number_of_curves);
+  for(std::size_t c = 0; c < curves.size(); ++c) EXPECT_EQ(curves[c].polylines, d.result.curves[c].polylines);
+  for(auto v : vertices(m))
+  {
+    EXPECT_EQ(get(partner, v), d.partner[v.idx()]);
+    EXPECT_EQ(get(tau, v), d.tau[v.idx()]);
+  }
+  for(auto f : faces(m)) EXPECT_EQ(get(region, f), d.region[f.idx()]);
+  EXPECT_DOUBLE_EQ(IRS::fixed_point_share(m, curves, partner), run.fixed_share);
+
+  // the map: within two mean edge lengths (plus the bending's 8.4 % of the
+  // distance to the axis, see BentCapsuleGivesItsIntrinsicAxis) of the true mirror
+  const std::vector<Point> pts = vertex_points(m);
+  const std::vector<int> everywhere(pts.size(), 0);
+  const Map_quality q = map_quality(pts, d.partner, everywhere, 0, shape.symmetries[0], 2. * shape.mean_edge_length,
+                                    bent_capsule_distortion);
+  std::cout << "[ one call ] " << run.mapped_vertices << " of " << pts.size() << " vertices mapped, "
+            << 100. * q.share() << " % within the bound, " << run.seconds << " s" << std::endl;
+  EXPECT_GE(run.mapped_vertices, pts.size() * 9 / 10);
+  EXPECT_GE(q.share(), 0.95);
+}
+
+// The same on Polyhedron_3 and with Sequential_tag; the seed decides
+TEST(Detection, DeterministicAndGeneric)
+{
+  const auto np = IRS::parameters::number_of_samples(std::size_t(300)).random_seed(2u)
+                    .maximum_number_of_voting_pairs(std::size_t(2000)).number_of_tries(1);
+  const auto shape = IRS::generate_snowman<Mesh>(1200);
+  const auto poly_shape = IRS::generate_snowman<Polyhedron>(1200);
+  Detection<Mesh> a, b;
+  a.run(shape.mesh, np);
+  b.run<CGAL::Sequential_tag>(shape.mesh, np);
+  ASSERT_FALSE(a.result.curves.empty());
+  EXPECT_EQ(a.partner, b.partner);
+  EXPECT_EQ(a.tau, b.tau);
+  EXPECT_EQ(a.region, b.region);
+  EXPECT_EQ(a.result.runs.size(), b.result.runs.size());
+  Detection<Polyhedron> p;
+  p.run(poly_shape.mesh, np);
+  EXPECT_EQ(p.partner, a.partner);
+  EXPECT_EQ(p.region, a.region);
+  ASSERT_EQ(p.result.curves.size(), a.result.curves.size());
+  for(std::size_t c = 0; c < a.result.curves.size(); ++c)
+    EXPECT_EQ(p.result.curves[c].polylines, a.result.curves[c].polylines);
+}
+
+// The retry rule and the guided run, as irsym's end-to-end test measures them
+// on the two snowmen at 300 samples: seed 0's map is suspect (it holds one
+// snowman in place), seed 1's is not; with one try the run guided by the
+// global reflection swaps the snowmen and is kept
+TEST(Detection, TriesAndTheGuidedRunAsIrsym)
+{
+  const auto shape = IRS::generate_two_snowmen<Mesh>();
+  const auto samples = IRS::parameters::number_of_samples(std::size_t(300));
+  Detection<Mesh> tries;
+  tries.run(shape.mesh, samples.number_of_tries(3));
+  ASSERT_EQ(tries.result.runs.size(), 2u);
+  EXPECT_EQ(tries.result.runs[0].seed, 0u);
+  EXPECT_GT(tries.result.runs[0].fixed_share, 0.1);
+  EXPECT_EQ(tries.result.runs[1].seed, 1u);
+  EXPECT_LE(tries.result.runs[1].fixed_share, 0.1);
+  EXPECT_EQ(tries.result.kept_run, 1u);
+  EXPECT_FALSE(tries.result.kept().suspect());
+  // the outputs are those of a run of seed 1 alone
+  Detection<Mesh> seed1;
+  seed1.run(shape.mesh, samples.random_seed(1u).number_of_tries(1));
+  ASSERT_EQ(seed1.result.runs.size(), 1u);
+  EXPECT_EQ(seed1.partner, tries.partner);
+  EXPECT_EQ(seed1.region, tries.region);
+  EXPECT_EQ(seed1.result.samples, tries.result.samples);
+
+  Detection<Mesh> guided;
+  guided.run(shape.mesh, samples.number_of_tries(1));
+  ASSERT_EQ(guided.result.runs.size(), 2u);
+  EXPECT_FALSE(guided.result.runs[0].guided);
+  EXPECT_TRUE(guided.result.runs[1].guided);
+  EXPECT_EQ(guided.result.runs[1].seed, 0u);
+  EXPECT_EQ(guided.result.kept_run, 1u);
+  EXPECT_LE(guided.result.kept().fixed_share, 0.1);
+  EXPECT_FALSE(guided.result.kept().suspect());
+  // it voted on seed 0's samples
+  EXPECT_EQ(guided.result.samples, IRS::farthest_point_samples(shape.mesh, samples.random_seed(0u)));
+
+  // at 400 samples and seed 3 the guided run takes the global reflection
+  // itself: the whole shape is the region of the first curve, every vertex mapped
+  Detection<Mesh> whole;
+  whole.run(shape.mesh, IRS::parameters::number_of_samples(std::size_t(400)).random_seed(3u).number_of_tries(1));
+  ASSERT_EQ(whole.result.runs.size(), 2u);
+  EXPECT_EQ(whole.result.kept_run, 1u);
+  EXPECT_TRUE(whole.result.kept().whole_shape_reflection);
+  EXPECT_EQ(whole.result.kept().region_faces, num_faces(shape.mesh));
+  EXPECT_EQ(whole.result.kept().mapped_vertices, num_vertices(shape.mesh));
+  EXPECT_EQ(std::count(whole.region.begin(), whole.region.end(), 0), long(num_faces(shape.mesh)));
+  EXPECT_EQ(std::count(whole.partner.begin(), whole.partner.end(), -1), 0);
+}
+
+TEST(Detection, BadInputAndCancellation)
+{
+  const auto shape = IRS::generate_ellipsoid<Mesh>(600);
+  auto pmap = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), shape.mesh);
+  auto expect_problem = [&](auto np, IRS::Input_problem problem, const char* what) {
+    try
+    {
+      IRS::detect_reflectional_symmetry(shape.mesh, pmap, np);
+      ADD_FAILURE() << what << ": no Input_error";
+    }
+    catch(const IRS::Input_error& e)
+    {
+      EXPECT_EQ(e.problem(), problem) << what << ": " << e.what();
+    }
+  };
+  expect_problem(IRS::parameters::number_of_tries(0), IRS::Input_problem::invalid_parameter, "no try");
+  expect_problem(IRS::parameters::number_of_tries(101), IRS::Input_problem::invalid_parameter, "101 tries");
+  expect_problem(IRS::parameters::number_of_samples(std::size_t(601 + num_vertices(shape.mesh))),
+                 IRS::Input_problem::too_many_samples, "more samples than vertices");
+  Mesh holed = shape.mesh;
+  holed.point(*vertices(holed).begin()) = Point(std::nan(""), 0., 0.);
+  auto hmap = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), holed);
+  EXPECT_THROW(IRS::detect_reflectional_symmetry(holed, hmap), IRS::Input_error);
+  // a callback that stops at once cancels the first run: nothing to keep
+  EXPECT_THROW(IRS::detect_reflectional_symmetry(shape.mesh, pmap,
+                                                 IRS::parameters::callback([](double) { return false; })),
+               IRS::Operation_cancelled);
 }

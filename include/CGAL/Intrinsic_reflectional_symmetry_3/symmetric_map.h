@@ -1323,14 +1323,13 @@ template <class TriangleMesh, class CurveRange, class SampleRange, class Partner
 Whole_shape_reflection whole_shape_reflection(const TriangleMesh& tm, const CurveRange& curves,
                                               const SampleRange& samples, std::vector<Partner>& global)
 {
-  const auto as_map = [&tm](std::vector<Partner>& v) {
-    return boost::make_iterator_property_map(v.begin(), get(boost::vertex_index, tm));
-  };
+  // an index map that any FaceGraph has (Polyhedron_3 has no boost::vertex_index of its own)
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+  const auto as_map = [&vim](std::vector<Partner>& v) { return boost::make_iterator_property_map(v.begin(), vim); };
   // one mesh and one Dijkstra from the curves for both maps' fixed points
   const Curves_mesh m = make_curves_mesh(tm, parameters::default_values());
   const std::size_t n = m.number_of_vertices;
   const std::vector<double> to_curve = distances_to_curve(m, read_curve_vertices(curves, n));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm);
   const auto share_of = [&](std::vector<Partner>& v) {
     return fixed_point_share(m, to_curve, read_partners(tm, as_map(v), vim, n));
   };
@@ -1375,7 +1374,7 @@ Whole_shape_reflection prefer_whole_shape_reflection(const TriangleMesh& tm, std
   // a reflection fixes its axis: an isometry that reverses orientation and
   // fixes no curve (the central inversion of an ellipsoid) is none
   Irsa_curve axis =
-    reflection_axis(tm, boost::make_iterator_property_map(global.cbegin(), get(boost::vertex_index, tm)));
+    reflection_axis(tm, boost::make_iterator_property_map(global.cbegin(), CGAL::get_initialized_vertex_index_map(tm)));
   if(axis.polylines.empty()) return w;
   w.taken = true;
   partner.swap(global);

@@ -53,6 +53,10 @@ CGAL_IRS_add_named_parameter(minimum_segment_area_t, minimum_segment_area, minim
 CGAL_IRS_add_named_parameter(merge_uncovered_parts_t, merge_uncovered_parts, merge_uncovered_parts)
 CGAL_IRS_add_named_parameter(minimum_region_coverage_t, minimum_region_coverage, minimum_region_coverage)
 CGAL_IRS_add_named_parameter(keep_off_axis_parts_t, keep_off_axis_parts, keep_off_axis_parts)
+CGAL_IRS_add_named_parameter(number_of_tries_t, number_of_tries, number_of_tries)
+CGAL_IRS_add_named_parameter(geodesic_oracle_t, geodesic_oracle, geodesic_oracle)
+CGAL_IRS_add_named_parameter(irsa_transform_map_t, irsa_transform_map, irsa_transform_map)
+CGAL_IRS_add_named_parameter(face_region_map_t, face_region_map, face_region_map)
 
 CGAL_IRS_import_named_parameter(vertex_point_t, vertex_point_map)
 CGAL_IRS_import_named_parameter(geom_traits_t, geom_traits)

@@ -2550,6 +2550,26 @@ TEST(Detection, DeterministicAndGeneric)
   EXPECT_EQ(a.tau, b.tau);
   EXPECT_EQ(a.region, b.region);
   EXPECT_EQ(a.result.runs.size(), b.result.runs.size());
+  // an oracle of one's own: the heat method's (not copyable: the pack holds a
+  // reference) gives the default's result, Dijkstra's its own distances
+  const IRS::Heat_method_geodesic_oracle<Mesh> heat(shape.mesh);
+  Detection<Mesh> h;
+  h.run(shape.mesh, np.geodesic_oracle(heat));
+  EXPECT_EQ(h.partner, a.partner);
+  const IRS::Dijkstra_geodesic_oracle<Mesh> dijkstra(shape.mesh);
+  Detection<Mesh> dj;
+  dj.run(shape.mesh, np.geodesic_oracle(dijkstra));
+  const IRS::Geodesic_distance_matrix along_edges = IRS::compute_geodesic_distance_matrix(dijkstra, dj.result.samples);
+  ASSERT_EQ(dj.result.distances.number_of_sources(), along_edges.number_of_sources());
+  std::size_t differ_from_heat = 0;
+  for(std::size_t i = 0; i < along_edges.number_of_sources(); i += 37)
+    for(std::size_t v = 0; v < num_vertices(shape.mesh); v += 11)
+    {
+      EXPECT_EQ(dj.result.distances(i, v), along_edges(i, v));
+      differ_from_heat += dj.result.distances(i, v) != a.result.distances(i, v);
+    }
+  EXPECT_GT(differ_from_heat, 0u);
+
   Detection<Polyhedron> p;
   p.run(poly_shape.mesh, np);
   EXPECT_EQ(p.partner, a.partner);

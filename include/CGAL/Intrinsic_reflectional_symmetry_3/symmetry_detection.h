@@ -401,6 +401,7 @@ Reflectional_symmetry detect_reflectional_symmetry(const TriangleMesh& tm, Verte
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  using CGAL::parameters::get_parameter_reference;
   using CGAL::parameters::is_default_parameter;
 
   const long long tries = choose_parameter(get_parameter(np, internal_np::number_of_tries), 5);

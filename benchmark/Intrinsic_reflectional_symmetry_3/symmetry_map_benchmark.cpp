@@ -5,7 +5,8 @@
 // Quality of the symmetric map on real posed humans: the whole pipeline
 // (farthest-point samples, heat-method geodesics, SDF signatures and the
 // similarity filter, IRSA voting, curve extraction, symmetric regions and
-// map) on FAUST (19 shapes, dense ground truth) and on the SCAPE meshes of
+// map; each run is the package's, internal::detection_run(), as in irsym and
+// detect_reflectional_symmetry()) on FAUST (19 shapes, dense ground truth) and on the SCAPE meshes of
 // the Kim et al. benchmark (sparse ground truth), and with --psb on the
 // models of the Princeton Segmentation Benchmark that Kim et al.'s "Watertight"
 // set gives symmetric feature points (not humans only), evaluated by the protocol
@@ -126,6 +127,7 @@
 #include <CGAL/Intrinsic_reflectional_symmetry_3/sampling.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/signatures.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/symmetric_map.h>
+#include <CGAL/Intrinsic_reflectional_symmetry_3/symmetry_detection.h>
 #include <CGAL/Intrinsic_reflectional_symmetry_3/internal/perturbed_copies.h>
 
 #include <CGAL/Dynamic_property_map.h>
@@ -193,22 +195,14 @@ struct Options
   bool perturbed() const { return noise > 0. || holes > 0; }
 };
 
-struct Pipeline_result
+// a run of the package's pipeline (internal::detection_run(), the run of
+// detect_reflectional_symmetry() and irsym), with what the tables add
+struct Pipeline_result : IRS::internal::Detection_run_data
 {
-  IRS::Geodesic_distance_matrix D; // for the CR0% map, made for the run kept only
-  std::vector<IRS::Irsa_curve> curves;
-  std::vector<std::ptrdiff_t> partner; // by vertex index
   std::vector<std::ptrdiff_t> partner_without_spectral; // number_of_eigenfunctions(0)
-  std::size_t similar_pairs = 0, voting_pairs = 0, region_faces = 0;
-  double fixed_share = 0.; // fixed_point_share() of the map, not timed
-  double distortion = 0.;  // isometric_distortion() of the map, not timed
-  double reversing_share = 0.; // orientation_reversing_share() of the map, not timed
-  unsigned seed = 0; // of the run kept
-  bool guided = false; // voted by the pairs that the global reflection swaps (irsym --tries)
-  bool whole_shape = false; // its map is that reflection itself (irsym's results.whole_shape_reflection)
-  bool whole_shape_refined = false; // that reflection refined over the whole mesh (refine_symmetric_map())
+  std::size_t voting_pairs = 0;
   int runs = 1;      // runs made with --tries; the times are those of the run kept, but total s sums all runs
-  double seconds[6] = {0., 0., 0., 0., 0., 0.}; // geodesics, signatures, voting, curves, map, total
+  double stage_seconds[6] = {0., 0., 0., 0., 0., 0.}; // geodesics, signatures, voting, curves, map, total
 };
 
 // --log-runs: the ground truth of the shape being run (not with --fill-holes,
@@ -233,94 +227,44 @@ auto vertex_map_property(const Mesh& m, VertexMap& map)
   return boost::make_iterator_property_map(map.begin(), get(boost::vertex_index, m));
 }
 
-// the package's pipeline with its defaults; only the number of samples and the
-// seed are set. The vertex SDF and areas, which do not depend on the samples,
-// come from run_pipeline(), once for all runs, as in irsym.
-// With `global_map`, the run reuses the samples and distances of `guided_by`
-// and only the similar pairs that the map swaps vote (as irsym --tries)
-Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const std::vector<double>& vertex_sdf,
-                                  const std::vector<double>& vertex_areas, const Pipeline_result* guided_by = nullptr,
+// the package's run of the pipeline (internal::detection_run()) with its
+// defaults; only the number of samples and the seed are set, and the
+// thresholds of the studies. The oracle, the vertex SDF and areas, which do
+// not depend on the samples, come from run_pipeline(), once for all runs, as
+// in irsym. With `global_map`, the run reuses the samples and distances of
+// `guided_by` and only the similar pairs that the map swaps vote (as irsym --tries)
+Pipeline_result run_pipeline_once(const Mesh& m, const Options& o, const IRS::Heat_method_geodesic_oracle<Mesh>& oracle,
+                                  const std::vector<double>& vertex_sdf, const std::vector<double>& vertex_areas,
+                                  const Pipeline_result* guided_by = nullptr,
                                   const std::vector<std::ptrdiff_t>* global_map = nullptr)
 {
   Pipeline_result r;
-  CGAL::Real_timer total, t;
-  total.start();
-  t.start();
-  const bool guided = guided_by != nullptr && global_map != nullptr;
-  if(guided) r.D = guided_by->D;
-  else
-  {
-    // --samples 0: the package's default number, min(3000, ceil(V / 4))
-    const std::vector<std::size_t> samples =
-      o.samples == 0 ? IRS::farthest_point_samples(m, IRS::parameters::random_seed(o.seed))
-                     : IRS::farthest_point_samples(m, IRS::parameters::number_of_samples(
-                                                        (std::min)(o.samples, std::size_t(num_vertices(m))))
-                                                        .random_seed(o.seed));
-    const IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
-    r.D = IRS::compute_geodesic_distance_matrix(oracle, samples);
-  }
-  r.guided = guided;
-  const IRS::Geodesic_distance_matrix& D = r.D;
-  r.seconds[0] = t.time(); t.reset();
-
-  const IRS::Sdf_signatures signatures = IRS::sdf_signatures(vertex_sdf, vertex_areas, D);
-  std::vector<std::pair<std::size_t, std::size_t>> similar;
-  IRS::similar_sample_pairs(signatures, std::back_inserter(similar),
-                            IRS::parameters::similarity_threshold(o.similarity)
-                              .maximum_similar_pairs_per_sample(o.similar_per_sample)
-                              .random_seed(o.seed));
-  if(guided)
-  {
-    std::vector<std::pair<std::size_t, std::size_t>> swapped;
-    IRS::pairs_consistent_with_map(m, D, vertex_map_property(m, *global_map), similar, std::back_inserter(swapped));
-    similar.swap(swapped);
-  }
-  r.similar_pairs = similar.size();
-  r.seconds[1] = t.time(); t.reset();
-
-  // eps_DIS goes to every stage that tests distances, as their documentation asks
-  auto tau = get(CGAL::dynamic_vertex_property_t<double>(), m);
-  const IRS::Irsa_voting_result voting =
-    IRS::compute_irsa_transform(m, D, similar, tau, IRS::parameters::distance_threshold(o.distance));
-  r.voting_pairs = voting.voting_pairs.size();
-  r.seconds[2] = t.time(); t.reset();
-
-  IRS::extract_irsa_curves(m, D, voting, tau, std::back_inserter(r.curves),
-                           IRS::parameters::distance_threshold(o.distance));
-  r.seconds[3] = t.time(); t.reset();
-
-  auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
-  auto map_region = get(CGAL::dynamic_vertex_property_t<int>(), m);
-  if(guided)
-    IRS::symmetric_vertex_map(m, D, r.curves, partner,
-                              map_parameters(o).vertex_region_map(map_region).initial_vertex_map(
-                                vertex_map_property(m, *global_map)));
-  else
-    IRS::symmetric_vertex_map(m, D, r.curves, partner, map_parameters(o).vertex_region_map(map_region));
-  auto region = get(CGAL::dynamic_face_property_t<int>(), m);
-  r.region_faces = IRS::symmetric_regions(m, D, r.curves, region, map_parameters(o));
-  r.partner.assign(num_vertices(m), -1);
-  for(Vertex v : vertices(m)) r.partner[v.idx()] = get(partner, v);
-  r.seconds[4] = t.time();
-  r.seconds[5] = total.time();
-  r.fixed_share = IRS::fixed_point_share(m, r.curves, partner);
-  r.distortion = IRS::isometric_distortion(m, partner, IRS::parameters::vertex_region_map(map_region));
-  if(guided)
-  {
-    // as irsym: the reflection itself over the whole shape where it is the
-    // better map, refined over the whole mesh where that lowers its defect
-    const IRS::internal::Whole_shape_reflection w = IRS::internal::prefer_whole_shape_reflection(
-      m, r.curves, D.sources(), *global_map, r.partner, r.fixed_share, r.distortion);
-    r.whole_shape_refined = w.refined;
-    r.whole_shape = w.taken;
-    if(w.taken)
-    {
-      r.region_faces = num_faces(m);
-      r.reversing_share = w.reversing_share;
-    }
-  }
-  if(!r.whole_shape) r.reversing_share = IRS::orientation_reversing_share(m, vertex_map_property(m, r.partner));
-  r.seed = o.seed;
+  CGAL::Real_timer stage;
+  using Stage = IRS::internal::Detection_stage;
+  const auto observe = [&](Stage s, bool begins, const IRS::internal::Detection_run_data&) {
+    if(begins) { stage.reset(); stage.start(); return; }
+    const int column = s == Stage::sampling || s == Stage::geodesic_matrix ? 0
+                       : s == Stage::signatures                            ? 1
+                       : s == Stage::voting                                ? 2
+                       : s == Stage::curves                                ? 3
+                                                                           : 4;
+    r.stage_seconds[column] += stage.time();
+  };
+  // eps_DIS goes to every stage that tests distances, as their documentation
+  // asks; the regions and the map take the studies' symmetry tolerance, the
+  // extraction keeps its own
+  const auto np = IRS::parameters::similarity_threshold(o.similarity)
+                    .maximum_similar_pairs_per_sample(o.similar_per_sample)
+                    .distance_threshold(o.distance);
+  const auto run = [&](const auto& run_np) {
+    return IRS::internal::detection_run<CGAL::Parallel_if_available_tag>(
+      m, oracle, vertex_sdf, vertex_areas, o.seed, run_np, guided_by, global_map, observe, map_parameters(o));
+  };
+  // --samples 0: the package's default number, min(3000, ceil(V / 4))
+  static_cast<IRS::internal::Detection_run_data&>(r) =
+    o.samples == 0 ? run(np) : run(np.number_of_samples((std::min)(o.samples, std::size_t(num_vertices(m)))));
+  r.voting_pairs = r.voting.voting_pairs.size();
+  r.stage_seconds[5] = r.seconds;
   return r;
 }
 
@@ -373,14 +317,17 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
   t.start();
   const std::vector<double> vertex_sdf = IRS::vertex_sdf_values(m), vertex_areas = IRS::vertex_areas(m);
   const double sdf_seconds = t.time(); // counted with the signatures (sig s) and in total s
+  t.reset();
+  const IRS::Heat_method_geodesic_oracle<Mesh> oracle(m);
+  const double oracle_seconds = t.time(); // counted with the geodesics (geod s) and in total s
   logged_global_map.clear();
-  double total_seconds = sdf_seconds;
+  double total_seconds = sdf_seconds + oracle_seconds;
   auto outcome = IRS::internal::best_of_tries<Pipeline_result>(
     [&](unsigned seed) {
       Options run = o;
       run.seed = seed;
-      Pipeline_result r = run_pipeline_once(m, run, vertex_sdf, vertex_areas);
-      total_seconds += r.seconds[5];
+      Pipeline_result r = run_pipeline_once(m, run, oracle, vertex_sdf, vertex_areas);
+      total_seconds += r.stage_seconds[5];
       if(o.log_runs && seed == o.seed) log_global_reflection(o, m, r);
       log_run(o, m, r);
       return r;
@@ -394,16 +341,17 @@ Pipeline_result run_pipeline(const Mesh& m, const Options& o)
       if(o.log_runs) log_map(o, m, "the global reflection itself", suspect_run.seed, suspect_run.curves, global_map);
       Options run = o;
       run.seed = suspect_run.seed;
-      g = run_pipeline_once(m, run, vertex_sdf, vertex_areas, &suspect_run, &global_map);
-      g.seconds[5] = tg.time(); // with the global reflection
-      total_seconds += g.seconds[5];
+      g = run_pipeline_once(m, run, oracle, vertex_sdf, vertex_areas, &suspect_run, &global_map);
+      g.stage_seconds[5] = tg.time(); // with the global reflection
+      total_seconds += g.stage_seconds[5];
       log_run(o, m, g);
       return true;
     });
   Pipeline_result kept = std::move(outcome.kept);
   kept.runs = outcome.runs + (outcome.guided_tried ? 1 : 0);
-  kept.seconds[1] += sdf_seconds;
-  kept.seconds[5] = total_seconds;
+  kept.stage_seconds[0] += oracle_seconds;
+  kept.stage_seconds[1] += sdf_seconds;
+  kept.stage_seconds[5] = total_seconds;
 
   // CR0%: the map without its spectral refinement, from the same curves (not timed)
   auto partner = get(CGAL::dynamic_vertex_property_t<std::ptrdiff_t>(), m);
@@ -617,7 +565,7 @@ void log_run(const Options& o, const Mesh& m, const Pipeline_result& r)
   if(!o.log_runs || runs_ground_truth == nullptr || o.fill_holes) return;
   Pipeline_result copy = r;
   copy.partner_without_spectral = r.partner;
-  std::cerr << "  run seed " << r.seed << (r.whole_shape ? (r.whole_shape_refined ? " (guided, whole shape, refined)" : " (guided, whole shape)")
+  std::cerr << "  run seed " << r.seed << (r.whole_shape ? (r.global_refined ? " (guided, whole shape, refined)" : " (guided, whole shape)")
                                                         : r.guided ? " (guided)" : "")
             << ": fixed " << 100. * r.fixed_share << " %, distortion " << r.distortion << ", defect "
             << IRS::symmetric_map_defect(r.fixed_share, r.distortion) << ", CR "
@@ -626,7 +574,7 @@ void log_run(const Options& o, const Mesh& m, const Pipeline_result& r)
   if(agreement >= 0.) std::cerr << ", agrees " << 100. * agreement << " %";
   std::cerr << ", reverses " << 100. * r.reversing_share << " %";
   if(r.similar_pairs > 0)
-    std::cerr << ", " << r.similar_pairs << " similar pairs, " << r.voting_pairs << " voted, vote " << r.seconds[2] << " s";
+    std::cerr << ", " << r.similar_pairs << " similar pairs, " << r.voting_pairs << " voted, vote " << r.stage_seconds[2] << " s";
   if(r.guided && !r.curves.empty() && logged_global_map.size() == num_vertices(m))
     std::cerr << ", first curve held " << 100. * IRS::curve_held_share(m, r.curves.front(), vertex_map_property(m, logged_global_map))
               << " %";
@@ -695,12 +643,12 @@ void print_row(const std::string& name, const Mesh& m, const Pipeline_result& r,
             << samples << std::setw(7) << r.curves.size() << std::fixed << std::setprecision(2) << std::setw(9)
             << e.coverage() << std::setw(8) << e.cr() << std::setw(8) << e.cr_without_spectral() << std::setw(8) << e.le025() << std::setprecision(4)
             << std::setw(9) << e.mean_error() << std::setw(10) << e.axis_mean << std::setw(9) << e.axis_max
-            << std::setprecision(2) << std::setw(8) << r.seconds[0] << std::setw(7) << r.seconds[1] << std::setw(8)
-            << r.seconds[2] << std::setw(8) << r.seconds[3] << std::setw(7) << r.seconds[4] << std::setw(8)
-            << r.seconds[5] << std::setprecision(1) << std::setw(8) << e.own_side() << std::setw(7) << e.isometric_share()
+            << std::setprecision(2) << std::setw(8) << r.stage_seconds[0] << std::setw(7) << r.stage_seconds[1] << std::setw(8)
+            << r.stage_seconds[2] << std::setw(8) << r.stage_seconds[3] << std::setw(7) << r.stage_seconds[4] << std::setw(8)
+            << r.stage_seconds[5] << std::setprecision(1) << std::setw(8) << e.own_side() << std::setw(7) << e.isometric_share()
             << std::setprecision(2) << std::setw(8) << e.cr_isometric() << std::setprecision(1) << std::setw(11)
             << e.failed_more_isometric() << std::setw(10) << e.at_contact() << std::setw(8) << 100. * r.fixed_share
-            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << (std::to_string(r.seed) + (r.whole_shape ? (r.whole_shape_refined ? "gwr" : "gw") : r.guided ? "g" : "")) << std::setw(6) << r.runs << std::setw(8) << e.checks << std::endl;
+            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << (std::to_string(r.seed) + (r.whole_shape ? (r.global_refined ? "gwr" : "gw") : r.guided ? "g" : "")) << std::setw(6) << r.runs << std::setw(8) << e.checks << std::endl;
 }
 
 struct Summary
@@ -709,7 +657,7 @@ struct Summary
   void add(const Metrics& e, const Pipeline_result& r)
   {
     cr.push_back(e.cr()); cr0.push_back(e.cr_without_spectral()); le025.push_back(e.le025()); err.push_back(e.mean_error());
-    cover.push_back(e.coverage()); axis.push_back(e.axis_mean); time.push_back(r.seconds[5]);
+    cover.push_back(e.coverage()); axis.push_back(e.axis_mean); time.push_back(r.stage_seconds[5]);
     iso_share.push_back(e.isometric_share()); cr_iso.push_back(e.cr_isometric());
   }
   static double mean(const std::vector<double>& v)

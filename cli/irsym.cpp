@@ -668,7 +668,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
       guided = run_seed(opt, work, oracle, vertex_sdf, areas, suspect_run.seed, within_limit, log, &suspect_run,
                         &global_map);
       tries.push(irsym::Json::object().add("seed", guided.seed).add("guided", true)
-                   .add("whole_shape_reflection", guided.whole_shape)
+                   .add("whole_shape_reflection", guided.whole_shape_reflection)
                    .add("global_reflection_reversing_share", guided.global_reversing_share)
                    .add("global_reflection_refined", guided.global_refined)
                    .add("curves", guided.curves.size())
@@ -783,7 +783,7 @@ int run_pipeline(const Options& opt, const Mesh& input, irsym::Stage_log& log, i
      .add("map_suspect", map_suspect)
      .add("seed_kept", kept.seed)
      .add("guided", kept.guided)
-     .add("whole_shape_reflection", kept.whole_shape)
+     .add("whole_shape_reflection", kept.whole_shape_reflection)
      .add("tries", tries)
      .add("segments", segments);
   irsym::Json curve_list = irsym::Json::array();

@@ -565,7 +565,7 @@ void log_run(const Options& o, const Mesh& m, const Pipeline_result& r)
   if(!o.log_runs || runs_ground_truth == nullptr || o.fill_holes) return;
   Pipeline_result copy = r;
   copy.partner_without_spectral = r.partner;
-  std::cerr << "  run seed " << r.seed << (r.whole_shape ? (r.global_refined ? " (guided, whole shape, refined)" : " (guided, whole shape)")
+  std::cerr << "  run seed " << r.seed << (r.whole_shape_reflection ? (r.global_refined ? " (guided, whole shape, refined)" : " (guided, whole shape)")
                                                         : r.guided ? " (guided)" : "")
             << ": fixed " << 100. * r.fixed_share << " %, distortion " << r.distortion << ", defect "
             << IRS::symmetric_map_defect(r.fixed_share, r.distortion) << ", CR "
@@ -648,7 +648,7 @@ void print_row(const std::string& name, const Mesh& m, const Pipeline_result& r,
             << r.stage_seconds[5] << std::setprecision(1) << std::setw(8) << e.own_side() << std::setw(7) << e.isometric_share()
             << std::setprecision(2) << std::setw(8) << e.cr_isometric() << std::setprecision(1) << std::setw(11)
             << e.failed_more_isometric() << std::setw(10) << e.at_contact() << std::setw(8) << 100. * r.fixed_share
-            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << (std::to_string(r.seed) + (r.whole_shape ? (r.global_refined ? "gwr" : "gw") : r.guided ? "g" : "")) << std::setw(6) << r.runs << std::setw(8) << e.checks << std::endl;
+            << std::setprecision(3) << std::setw(7) << r.distortion << std::setw(6) << (std::to_string(r.seed) + (r.whole_shape_reflection ? (r.global_refined ? "gwr" : "gw") : r.guided ? "g" : "")) << std::setw(6) << r.runs << std::setw(8) << e.checks << std::endl;
 }
 
 struct Summary

@@ -87,45 +87,20 @@ Named_function_parameters<K, Tag, NP> with_parameter(const NP& np, const K& k)
 // The stages of one run, as `detection_run()` reports them to its observer
 enum class Detection_stage { sampling, geodesic_matrix, signatures, voting, curves, regions_and_map };
 
-// everything one run makes, by vertex and face index (irsym writes it all out)
-struct Detection_run_data
+// everything one run makes, by vertex and face index (irsym writes it all
+// out), beside its summary
+struct Detection_run_data : Symmetry_detection_run
 {
-  unsigned seed = 0;
   std::size_t index = 0; // in Reflectional_symmetry::runs
   std::vector<std::size_t> samples;
   Geodesic_distance_matrix D;
-  std::size_t similar_pairs = 0;
   Irsa_voting_result voting;
   std::vector<double> tau;
   std::vector<Irsa_curve> curves;
   std::vector<long> region;
   std::vector<std::ptrdiff_t> partner;
-  std::size_t region_faces = 0, mapped_vertices = 0;
-  double fixed_share = 0., distortion = 0., reversing_share = 0.; // what best_of_tries() reads
-  bool guided = false;
-  bool whole_shape = false;            // the map is the global reflection, the first curve's region the whole shape
-  double global_reversing_share = -1.; // orientation_reversing_share() of that reflection (guided runs)
+  double global_reversing_share = -1.; // orientation_reversing_share() of the global reflection (guided runs)
   bool global_refined = false;         // that reflection refined over the whole mesh (refine_symmetric_map())
-  double seconds = 0.;
-
-  bool suspect() const { return is_suspect_symmetric_map(fixed_share, distortion); }
-
-  Symmetry_detection_run summary() const
-  {
-    Symmetry_detection_run s;
-    s.seed = seed;
-    s.guided = guided;
-    s.whole_shape_reflection = whole_shape;
-    s.similar_pairs = similar_pairs;
-    s.number_of_curves = curves.size();
-    s.region_faces = region_faces;
-    s.mapped_vertices = mapped_vertices;
-    s.fixed_share = fixed_share;
-    s.distortion = distortion;
-    s.reversing_share = reversing_share;
-    s.seconds = seconds;
-    return s;
-  }
 };
 
 // for runs that nobody watches
@@ -226,7 +201,7 @@ Detection_run_data detection_run(const TriangleMesh& tm, const Oracle& oracle, c
       prefer_whole_shape_reflection(tm, r.curves, r.samples, *global, r.partner, r.fixed_share, r.distortion);
     r.global_refined = w.refined;
     r.global_reversing_share = w.reversing_share;
-    r.whole_shape = w.taken;
+    r.whole_shape_reflection = w.taken;
     if(w.taken)
     {
       std::fill(r.region.begin(), r.region.end(), 0l); // the first curve's region: the whole shape
@@ -236,8 +211,9 @@ Detection_run_data detection_run(const TriangleMesh& tm, const Oracle& oracle, c
       r.reversing_share = w.reversing_share;
     }
   }
-  if(!r.whole_shape) r.reversing_share = orientation_reversing_share(tm, partner, np);
+  if(!r.whole_shape_reflection) r.reversing_share = orientation_reversing_share(tm, partner, np);
   stage(Detection_stage::regions_and_map, false);
+  r.number_of_curves = r.curves.size();
   r.seconds = timer.time();
   return r;
 }
@@ -256,7 +232,7 @@ Detection_run_data detection_run(const TriangleMesh& tm, const Oracle& oracle, c
 
 template <typename ConcurrencyTag, typename TriangleMesh, typename VertexPartnerMap, typename Oracle, typename NP>
 Reflectional_symmetry detect_reflectional_symmetry_with(const TriangleMesh& tm, VertexPartnerMap partner,
-                                                        const Oracle& oracle, const NP& np)
+                                                        const Oracle& oracle, int tries, const NP& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -273,9 +249,8 @@ Reflectional_symmetry detect_reflectional_symmetry_with(const TriangleMesh& tm, 
   Reflectional_symmetry out;
   const auto record = [&out](Detection_run_data& r) {
     r.index = out.runs.size();
-    out.runs.push_back(r.summary());
+    out.runs.push_back(r); // its summary
   };
-  const int tries = int(choose_parameter(get_parameter(np, internal_np::number_of_tries), 5));
   Tries_outcome<Detection_run_data> outcome = best_of_tries<Detection_run_data>(
     [&](unsigned seed) {
       Detection_run_data r = detection_run<ConcurrencyTag>(tm, oracle, vertex_sdf, areas, seed, np);
@@ -412,11 +387,11 @@ Reflectional_symmetry detect_reflectional_symmetry(const TriangleMesh& tm, Verte
   if constexpr(is_default_parameter<CGAL_NP_CLASS, internal_np::geodesic_oracle_t>::value)
   {
     const Heat_method_geodesic_oracle<TriangleMesh> oracle(tm, np);
-    return internal::detect_reflectional_symmetry_with<ConcurrencyTag>(tm, partner, oracle, np);
+    return internal::detect_reflectional_symmetry_with<ConcurrencyTag>(tm, partner, oracle, int(tries), np);
   }
   else
     return internal::detect_reflectional_symmetry_with<ConcurrencyTag>(
-      tm, partner, get_parameter_reference(np, internal_np::geodesic_oracle), np);
+      tm, partner, get_parameter_reference(np, internal_np::geodesic_oracle), int(tries), np);
 }
 
 } // namespace Intrinsic_reflectional_symmetry_3
